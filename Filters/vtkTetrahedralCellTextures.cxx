@@ -1,0 +1,280 @@
+#include "vtkTetrahedralCellTextures.h"
+
+#include "vtkDataArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridCellAdjacency.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+vtkStandardNewMacro(vtkTetrahedralCellTextures);
+
+namespace
+{
+using Vec3 = std::array<double, 3>;
+
+Vec3 Sub(const double* a, const double* b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+
+Vec3 Cross(const Vec3& a, const Vec3& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+
+double Dot(const Vec3& a, const Vec3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// A tetrahedron is treated as flat when |6V| <= eps * L^3, L its longest edge:
+// its face planes are then not a partition of space a ray can march through.
+constexpr double FlatVolumeRatio = 1e-12;
+
+double LongestEdgeCubed(const double* p[4])
+{
+  double longest = 0.0;
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = i + 1; j < 4; ++j)
+    {
+      const Vec3 e = Sub(p[j], p[i]);
+      longest = std::max(longest, Dot(e, e));
+    }
+  }
+  return longest * std::sqrt(longest);
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
+{
+  std::vector<vtkIdType> unsupported;
+  vtkUnstructuredGridCellAdjacency::ExtractTetrahedra(grid, this->Tets, this->CellIds, unsupported);
+  this->Unsupported = unsupported;
+  this->NumberOfUnsupportedCells = 0;
+  for (size_t i = 1; i < unsupported.size(); i += 2)
+  {
+    this->NumberOfUnsupportedCells += unsupported[i];
+  }
+  this->FacePlanes.clear();
+  this->Neighbors.clear();
+  this->Field.clear();
+  this->BoundaryPoints.clear();
+  this->BoundaryTriangles.clear();
+  this->BoundaryFaces.clear();
+  this->NumberOfDegenerateTetrahedra = 0;
+  this->NumberOfInvertedTetrahedra = 0;
+  this->NumberOfNonManifoldFaces = 0;
+  const vtkIdType numberOfTets = this->GetNumberOfTetrahedra();
+  if (numberOfTets == 0 || !grid->GetPoints())
+  {
+    return false;
+  }
+
+  // Local frame: the centre of the bounds.
+  double bounds[6];
+  grid->GetPoints()->GetBounds(bounds);
+  this->Length = 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    this->Origin[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
+    this->Length += (bounds[2 * i + 1] - bounds[2 * i]) * (bounds[2 * i + 1] - bounds[2 * i]);
+  }
+  this->Length = std::sqrt(this->Length);
+  const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
+  this->LocalPoints.resize(3 * numberOfPoints);
+  vtkPoints* points = grid->GetPoints();
+  for (vtkIdType p = 0; p < numberOfPoints; ++p)
+  {
+    double x[3];
+    points->GetPoint(p, x);
+    for (int i = 0; i < 3; ++i)
+    {
+      this->LocalPoints[3 * p + i] = x[i] - this->Origin[i];
+    }
+  }
+
+  // Face planes: n_f outward unit normal, d_f = n_f . (face centroid).
+  this->Degenerate.assign(numberOfTets, 0);
+  this->FacePlanes.assign(16 * numberOfTets, 0.0f);
+  std::vector<signed char> orientation(numberOfTets, 1);
+  std::atomic<vtkIdType> degenerate(0), inverted(0);
+  const double* local = this->LocalPoints.data();
+  const vtkIdType* tets = this->Tets.data();
+#pragma omp parallel for schedule(static)
+  for (vtkIdType t = 0; t < numberOfTets; ++t)
+  {
+    const double* p[4];
+    for (int v = 0; v < 4; ++v)
+    {
+      p[v] = local + 3 * tets[4 * t + v];
+    }
+    const double volume6 = vtkUnstructuredGridCellAdjacency::SignedVolume6(p[0], p[1], p[2], p[3]);
+    const double scale = LongestEdgeCubed(p);
+    if (!(std::abs(volume6) > FlatVolumeRatio * scale))
+    {
+      this->Degenerate[t] = 1;
+      ++degenerate;
+      continue;
+    }
+    const double sign = volume6 > 0 ? 1.0 : -1.0;
+    if (sign < 0)
+    {
+      orientation[t] = -1;
+      ++inverted;
+    }
+    for (int f = 0; f < 4; ++f)
+    {
+      const double* a = p[vtkUnstructuredGridCellAdjacency::FaceVertex(f, 0)];
+      const double* b = p[vtkUnstructuredGridCellAdjacency::FaceVertex(f, 1)];
+      const double* c = p[vtkUnstructuredGridCellAdjacency::FaceVertex(f, 2)];
+      Vec3 n = Cross(Sub(b, a), Sub(c, a));
+      const double length = std::sqrt(Dot(n, n)) * sign;
+      for (double& x : n)
+      {
+        x /= length;
+      }
+      const Vec3 centroid = { (a[0] + b[0] + c[0]) / 3.0, (a[1] + b[1] + c[1]) / 3.0,
+        (a[2] + b[2] + c[2]) / 3.0 };
+      float* plane = this->FacePlanes.data() + 16 * t + 4 * f;
+      plane[0] = static_cast<float>(n[0]);
+      plane[1] = static_cast<float>(n[1]);
+      plane[2] = static_cast<float>(n[2]);
+      plane[3] = static_cast<float>(Dot(n, centroid));
+    }
+  }
+  this->NumberOfDegenerateTetrahedra = degenerate.load();
+  this->NumberOfInvertedTetrahedra = inverted.load();
+
+  // Neighbours, without the flat tetrahedra.
+  vtkNew<vtkUnstructuredGridCellAdjacency> adjacency;
+  adjacency->Build(numberOfPoints, tets, numberOfTets, this->Degenerate.data());
+  this->NumberOfNonManifoldFaces = adjacency->GetNumberOfNonManifoldFaces();
+  const std::vector<vtkIdType>& neighbors = adjacency->GetNeighbors();
+  this->Neighbors.resize(neighbors.size());
+  std::transform(neighbors.begin(), neighbors.end(), this->Neighbors.begin(),
+    [](vtkIdType n) { return static_cast<int>(n); });
+
+  // Boundary triangles wound outward, over a compact set of points.
+  const std::vector<vtkIdType>& boundary = adjacency->GetBoundaryFaces();
+  std::vector<vtkIdType> pointMap(numberOfPoints, -1);
+  for (size_t k = 0; k < boundary.size(); k += 2)
+  {
+    const vtkIdType t = boundary[k];
+    const int f = static_cast<int>(boundary[k + 1]);
+    int corner[3] = { vtkUnstructuredGridCellAdjacency::FaceVertex(f, 0),
+      vtkUnstructuredGridCellAdjacency::FaceVertex(f, 1),
+      vtkUnstructuredGridCellAdjacency::FaceVertex(f, 2) };
+    if (orientation[t] < 0)
+    {
+      std::swap(corner[1], corner[2]);
+    }
+    for (int v : corner)
+    {
+      const vtkIdType id = tets[4 * t + v];
+      if (pointMap[id] < 0)
+      {
+        pointMap[id] = static_cast<vtkIdType>(this->BoundaryPoints.size() / 3);
+        for (int i = 0; i < 3; ++i)
+        {
+          this->BoundaryPoints.push_back(static_cast<float>(local[3 * id + i]));
+        }
+      }
+      this->BoundaryTriangles.push_back(static_cast<unsigned int>(pointMap[id]));
+    }
+    this->BoundaryFaces.push_back(static_cast<int>(4 * t + f));
+  }
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTetrahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScalars, int component)
+{
+  const vtkIdType numberOfTets = this->GetNumberOfTetrahedra();
+  this->Field.assign(4 * numberOfTets, 0.0f);
+  this->NumberOfNaNScalars = 0;
+  if (!scalars || numberOfTets == 0 || component < 0 ||
+    component >= scalars->GetNumberOfComponents())
+  {
+    return false;
+  }
+  const double* local = this->LocalPoints.data();
+  const vtkIdType* tets = this->Tets.data();
+  std::atomic<vtkIdType> nanCells(0);
+
+#pragma omp parallel for schedule(static)
+  for (vtkIdType t = 0; t < numberOfTets; ++t)
+  {
+    float* field = this->Field.data() + 4 * t;
+    if (this->Degenerate[t])
+    {
+      field[3] = TransparentCellOffset();
+      continue;
+    }
+    if (cellScalars)
+    {
+      const double s = scalars->GetComponent(this->CellIds[t], component);
+      field[3] = std::isnan(s) ? TransparentCellOffset() : static_cast<float>(s);
+      nanCells += std::isnan(s) ? 1 : 0;
+      continue;
+    }
+    // Gradient of the linear interpolant: M g = ds with rows r_i = p_i - p_0,
+    // solved by Cramer's rule, g = (ds1 r2 x r3 + ds2 r3 x r1 + ds3 r1 x r2) / det M.
+    const double* p[4];
+    double s[4];
+    bool hasNaN = false;
+    for (int v = 0; v < 4; ++v)
+    {
+      p[v] = local + 3 * tets[4 * t + v];
+      s[v] = scalars->GetComponent(tets[4 * t + v], component);
+      hasNaN = hasNaN || std::isnan(s[v]);
+    }
+    if (hasNaN)
+    {
+      field[3] = TransparentCellOffset();
+      ++nanCells;
+      continue;
+    }
+    const Vec3 r1 = Sub(p[1], p[0]), r2 = Sub(p[2], p[0]), r3 = Sub(p[3], p[0]);
+    const Vec3 c23 = Cross(r2, r3), c31 = Cross(r3, r1), c12 = Cross(r1, r2);
+    const double det = Dot(r1, c23);
+    const double ds[3] = { s[1] - s[0], s[2] - s[0], s[3] - s[0] };
+    Vec3 g;
+    for (int i = 0; i < 3; ++i)
+    {
+      g[i] = (ds[0] * c23[i] + ds[1] * c31[i] + ds[2] * c12[i]) / det;
+    }
+    const double s0 = s[0] - (g[0] * p[0][0] + g[1] * p[0][1] + g[2] * p[0][2]);
+    field[0] = static_cast<float>(g[0]);
+    field[1] = static_cast<float>(g[1]);
+    field[2] = static_cast<float>(g[2]);
+    field[3] = static_cast<float>(s0);
+  }
+  this->NumberOfNaNScalars = nanCells.load();
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTetrahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfTetrahedra: " << this->GetNumberOfTetrahedra() << "\n";
+  os << indent << "Origin: (" << this->Origin[0] << ", " << this->Origin[1] << ", "
+     << this->Origin[2] << ")\n";
+  os << indent << "NumberOfBoundaryFaces: " << this->BoundaryFaces.size() << "\n";
+  os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
+  os << indent << "NumberOfInvertedTetrahedra: " << this->NumberOfInvertedTetrahedra << "\n";
+  os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
+  os << indent << "NumberOfNaNScalars: " << this->NumberOfNaNScalars << "\n";
+  os << indent << "NumberOfUnsupportedCells: " << this->NumberOfUnsupportedCells << "\n";
+}

@@ -1,0 +1,123 @@
+/**
+ * @class   vtkTetrahedralCellTextures
+ * @brief   per-tetrahedron "cell textures" of a mesh, built on the CPU
+ *
+ * The data a cell-to-cell ray caster needs per tetrahedron (Espinha & Celes
+ * 2005, Sec. 3.1; Weiler et al. 2003, Sec. 3): four outward face planes
+ * (unit normal n_f and d_f = n_f . x on the face), four neighbour ids and the
+ * linear scalar field s(x) = g . x + s0, i.e. 96 bytes per tetrahedron.
+ *
+ * Two caches with one reason each to be rebuilt:
+ * - BuildGeometry(): when points or cells change. Coordinates are expressed
+ *   relative to the centre of the bounds (GetOrigin()) so that meshes far from
+ *   the origin keep single-precision accuracy. Zero-volume tetrahedra are left
+ *   out (their neighbours see a boundary; depth peeling re-enters behind them).
+ *   Also gives the boundary triangles, wound outward, with their points.
+ * - BuildField(): when the scalars change. Point scalars give the linear
+ *   interpolant's gradient; cell scalars a constant. A tetrahedron touching a
+ *   NaN scalar gets the TransparentCellOffset() marker and renders empty.
+ *
+ * No OpenGL here: the mapper uploads these arrays as buffer textures.
+ */
+#ifndef vtkTetrahedralCellTextures_h
+#define vtkTetrahedralCellTextures_h
+
+#include "ppirayFiltersModule.h" // for export macro
+#include "vtkObject.h"
+
+#include <vector> // for std::vector
+
+class vtkDataArray;
+class vtkUnstructuredGrid;
+
+class PPIRAYFILTERS_EXPORT vtkTetrahedralCellTextures : public vtkObject
+{
+public:
+  static vtkTetrahedralCellTextures* New();
+  vtkTypeMacro(vtkTetrahedralCellTextures, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Planes, neighbours and boundary of the tetrahedra of `grid`. Other cell
+   * types are left out and counted (GetUnsupportedCellTypes()). Returns false
+   * when no tetrahedron is left.
+   */
+  bool BuildGeometry(vtkUnstructuredGrid* grid);
+
+  /**
+   * Linear field per tetrahedron from `scalars` (point data when `cellScalars`
+   * is false, else cell data), using `component`. Call after BuildGeometry().
+   */
+  bool BuildField(vtkDataArray* scalars, bool cellScalars, int component);
+
+  /**
+   * Value stored as s0 of a tetrahedron that must render empty (NaN scalar).
+   */
+  static constexpr float TransparentCellOffset() { return -3.0e38f; }
+
+  vtkIdType GetNumberOfTetrahedra() const
+  {
+    return static_cast<vtkIdType>(this->CellIds.size());
+  }
+  /** Cell id in the input grid of each tetrahedron. */
+  const std::vector<vtkIdType>& GetCellIds() const { return this->CellIds; }
+  /** Centre of the bounds: all coordinates below are relative to it. */
+  const double* GetOrigin() const { return this->Origin; }
+  /** Length of the diagonal of the bounds. */
+  double GetLength() const { return this->Length; }
+  /** 16 floats per tetrahedron: (n_f, d_f) for faces f = 0..3. */
+  const std::vector<float>& GetFacePlanes() const { return this->FacePlanes; }
+  /** 4 ints per tetrahedron: neighbour through face f, -1 on the boundary. */
+  const std::vector<int>& GetNeighbors() const { return this->Neighbors; }
+  /** 4 floats per tetrahedron: (g, s0) with s(x) = g . x + s0. */
+  const std::vector<float>& GetField() const { return this->Field; }
+  /** Boundary points, 3 floats each (relative to GetOrigin()). */
+  const std::vector<float>& GetBoundaryPoints() const { return this->BoundaryPoints; }
+  /** Boundary triangles, 3 indices into GetBoundaryPoints(), wound outward. */
+  const std::vector<unsigned int>& GetBoundaryTriangles() const
+  {
+    return this->BoundaryTriangles;
+  }
+  /** Per boundary triangle: 4 * tetrahedron + local face. */
+  const std::vector<int>& GetBoundaryFaces() const { return this->BoundaryFaces; }
+
+  vtkGetMacro(NumberOfDegenerateTetrahedra, vtkIdType);
+  vtkGetMacro(NumberOfInvertedTetrahedra, vtkIdType);
+  vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
+  vtkGetMacro(NumberOfNaNScalars, vtkIdType);
+  vtkGetMacro(NumberOfUnsupportedCells, vtkIdType);
+  /** Pairs (VTK cell type, count) of the cells left out. */
+  const std::vector<vtkIdType>& GetUnsupportedCellTypes() const { return this->Unsupported; }
+
+  /** Bytes of the per-tetrahedron arrays (planes, neighbours, field). */
+  static constexpr int BytesPerTetrahedron() { return 96; }
+
+protected:
+  vtkTetrahedralCellTextures() = default;
+  ~vtkTetrahedralCellTextures() override = default;
+
+  double Origin[3] = { 0, 0, 0 };
+  double Length = 0;
+  std::vector<vtkIdType> Tets; // 4 point ids per tetrahedron
+  std::vector<vtkIdType> CellIds;
+  std::vector<unsigned char> Degenerate;
+  std::vector<float> FacePlanes;
+  std::vector<int> Neighbors;
+  std::vector<float> Field;
+  std::vector<float> BoundaryPoints;
+  std::vector<unsigned int> BoundaryTriangles;
+  std::vector<int> BoundaryFaces;
+  std::vector<vtkIdType> Unsupported;
+  std::vector<double> LocalPoints; // 3 per grid point, relative to Origin
+  vtkIdType NumberOfDegenerateTetrahedra = 0;
+  vtkIdType NumberOfInvertedTetrahedra = 0;
+  vtkIdType NumberOfNonManifoldFaces = 0;
+  vtkIdType NumberOfNaNScalars = 0;
+  vtkIdType NumberOfUnsupportedCells = 0;
+
+private:
+  vtkTetrahedralCellTextures(const vtkTetrahedralCellTextures&) = delete;
+  void operator=(const vtkTetrahedralCellTextures&) = delete;
+};
+
+#endif

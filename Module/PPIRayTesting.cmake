@@ -1,0 +1,44 @@
+# ppiray_add_cxx_tests(<driver>
+#   TESTS <name>...            one <name>.cxx each, int <name>(int, char*[])
+#   LIBRARIES <target>...
+#   [BASELINE_DIR <dir>])      baselines: <dir>/<name>.png (passed with -V)
+#
+# One executable per module (create_test_sourcelist), one ctest test per
+# function, run with VTK's regression-test arguments: -D <data root>
+# -T <temporary dir> -V <baseline>. Tests name what they check in the code.
+function (ppiray_add_cxx_tests driver)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "BASELINE_DIR" "TESTS;LIBRARIES")
+  set(sources)
+  foreach (test IN LISTS arg_TESTS)
+    list(APPEND sources "${test}.cxx")
+  endforeach ()
+  create_test_sourcelist(driver_sources "${driver}.cxx" ${sources})
+  add_executable("${driver}" ${driver_sources})
+  target_link_libraries("${driver}" PRIVATE ${arg_LIBRARIES})
+  set(temporary "${CMAKE_BINARY_DIR}/Testing/Temporary")
+  file(MAKE_DIRECTORY "${temporary}")
+  foreach (test IN LISTS arg_TESTS)
+    set(baseline_args)
+    if (arg_BASELINE_DIR)
+      set(baseline_args -V "${arg_BASELINE_DIR}/${test}.png")
+    endif ()
+    add_test(NAME "${driver}.${test}"
+      COMMAND "${driver}" "${test}" -D "${PPIRAY_DATA_ROOT}" -T "${temporary}" ${baseline_args})
+    set_tests_properties("${driver}.${test}" PROPERTIES
+      SKIP_RETURN_CODE 125
+      ENVIRONMENT "OMP_NUM_THREADS=2")
+  endforeach ()
+endfunction ()
+
+# ppiray_add_python_test(<name> <script> [ARGS...]): runs VTK's Python with the
+# build's ppiray package importable.
+function (ppiray_add_python_test name script)
+  if (NOT PPIRAY_PYTHON_DESTINATION)
+    return ()
+  endif ()
+  add_test(NAME "${name}"
+    COMMAND "${PPIRAY_PYTHON_EXECUTABLE}" "${script}" ${ARGN})
+  set_tests_properties("${name}" PROPERTIES
+    SKIP_RETURN_CODE 125
+    ENVIRONMENT "PYTHONPATH=${CMAKE_BINARY_DIR}/${PPIRAY_PYTHON_DESTINATION};LD_LIBRARY_PATH=${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
+endfunction ()

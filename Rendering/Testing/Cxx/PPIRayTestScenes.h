@@ -1,0 +1,135 @@
+// Scenes shared by the Rendering tests: meshes built from voxels split into
+// six tetrahedra (Kuhn split: consistent across shared faces), scalar fields,
+// transfer functions, and a window set up for headless regression testing.
+#ifndef PPIRayTestScenes_h
+#define PPIRayTestScenes_h
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDoubleArray.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+
+namespace ppiray_test
+{
+using Field = std::function<double(double, double, double)>;
+using Keep = std::function<bool(int, int, int)>;
+
+// Voxels (i, j, k) in [0, n)^3 of size h where keep(i, j, k), each split into
+// six tetrahedra around its main diagonal; points shared; scalar "s" = f(x).
+inline vtkSmartPointer<vtkUnstructuredGrid> VoxelTetrahedra(
+  const int n[3], double h, const double origin[3], const Keep& keep, const Field& f)
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> scalars;
+  scalars->SetName("s");
+  std::map<std::array<int, 3>, vtkIdType> ids;
+  auto point = [&](int i, int j, int k) {
+    auto it = ids.find({ i, j, k });
+    if (it != ids.end())
+    {
+      return it->second;
+    }
+    const double x = origin[0] + h * i, y = origin[1] + h * j, z = origin[2] + h * k;
+    const vtkIdType id = points->InsertNextPoint(x, y, z);
+    scalars->InsertNextValue(f(x, y, z));
+    ids[{ i, j, k }] = id;
+    return id;
+  };
+  // Kuhn split: the six paths from corner 000 to 111 along the axes.
+  const int paths[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 },
+    { 2, 1, 0 } };
+  vtkNew<vtkCellArray> cells;
+  for (int k = 0; k < n[2]; ++k)
+  {
+    for (int j = 0; j < n[1]; ++j)
+    {
+      for (int i = 0; i < n[0]; ++i)
+      {
+        if (!keep(i, j, k))
+        {
+          continue;
+        }
+        for (const auto& path : paths)
+        {
+          int c[3] = { i, j, k };
+          vtkIdType tet[4];
+          tet[0] = point(c[0], c[1], c[2]);
+          for (int s = 0; s < 3; ++s)
+          {
+            ++c[path[s]];
+            tet[s + 1] = point(c[0], c[1], c[2]);
+          }
+          cells->InsertNextCell(4, tet);
+        }
+      }
+    }
+  }
+  grid->SetPoints(points);
+  grid->SetCells(VTK_TETRA, cells);
+  grid->GetPointData()->SetScalars(scalars);
+  return grid;
+}
+
+// A smooth field on [0, 1]^3-ish coordinates.
+inline double Blob(double x, double y, double z)
+{
+  return std::exp(-((x - 0.5) * (x - 0.5) + (y - 0.45) * (y - 0.45) + (z - 0.55) * (z - 0.55)) /
+           0.12) +
+    0.3 * x;
+}
+
+// A smooth rainbow with smooth opacity over [lo, hi].
+inline void SmoothTransferFunction(vtkVolumeProperty* property, double lo, double hi,
+  double maxOpacity = 0.6, double unitDistance = 0.25)
+{
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(lo, 0.1, 0.2, 0.9);
+  color->AddRGBPoint(lo + 0.5 * (hi - lo), 0.2, 0.9, 0.3);
+  color->AddRGBPoint(hi, 0.95, 0.3, 0.1);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(lo, 0.0);
+  opacity->AddPoint(hi, maxOpacity);
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetScalarOpacityUnitDistance(unitDistance);
+  property->ShadeOff();
+  property->SetInterpolationTypeToLinear();
+}
+
+// Window + renderer for a regression test: fixed size, no multisampling.
+struct Scene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkVolumeProperty> Property;
+  Scene(int width = 300, int height = 300)
+  {
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(width, height);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->SetBackground(0.0, 0.0, 0.0);
+    this->Volume->SetProperty(this->Property);
+    this->Renderer->AddVolume(this->Volume);
+  }
+};
+}
+
+#endif

@@ -1,0 +1,166 @@
+// Bad input gets a clear message and a defined result, never a crash:
+// an empty grid (renders nothing, silently), a grid without scalars (error),
+// NaN scalars (warning; the touching cells render empty, nothing else
+// changes), unsupported cells only (error naming the type and count), a mix
+// of tetrahedra and hexahedra (error; the tetrahedra still render), and a
+// zero-volume tetrahedron (warning; skipped).
+
+#include "PPIRayImageCompare.h"
+#include "PPIRayTestScenes.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkUnstructuredGridGPURayCastMapper.h"
+
+#include <iostream>
+#include <limits>
+
+namespace
+{
+// Collects every error and warning message a mapper emits.
+class MessageCollector : public vtkCommand
+{
+public:
+  static MessageCollector* New() { return new MessageCollector; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings) +=
+      static_cast<const char*>(data) + std::string("\n");
+  }
+  std::string Errors;
+  std::string Warnings;
+};
+
+struct Outcome
+{
+  std::string Errors;
+  std::string Warnings;
+  std::vector<unsigned char> Image;
+};
+
+Outcome RenderGrid(vtkUnstructuredGrid* grid)
+{
+  ppiray_test::Scene scene(100, 100);
+  ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
+  vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+  vtkNew<MessageCollector> observer;
+  mapper->AddObserver(vtkCommand::ErrorEvent, observer);
+  mapper->AddObserver(vtkCommand::WarningEvent, observer);
+  mapper->SetInputData(grid);
+  scene.Volume->SetMapper(mapper);
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->SetPosition(0.5, 0.5, 3.0);
+  camera->SetFocalPoint(0.5, 0.5, 0.5);
+  camera->SetClippingRange(0.5, 5.0);
+  camera->SetViewAngle(40);
+  scene.Window->Render();
+  Outcome outcome;
+  outcome.Errors = observer->Errors;
+  outcome.Warnings = observer->Warnings;
+  outcome.Image = ppiray_test::ReadRGB(scene.Window);
+  return outcome;
+}
+
+int Lit(const std::vector<unsigned char>& image)
+{
+  int lit = 0;
+  for (unsigned char c : image)
+  {
+    lit += c > 0 ? 1 : 0;
+  }
+  return lit;
+}
+
+int Expect(bool condition, const char* what)
+{
+  if (!condition)
+  {
+    std::cerr << "FAILED: " << what << "\n";
+    return 1;
+  }
+  return 0;
+}
+}
+
+int TestGPURayCastBadInput(int, char*[])
+{
+  const int n[3] = { 3, 3, 3 };
+  const double origin[3] = { 0, 0, 0 };
+  auto good = ppiray_test::VoxelTetrahedra(
+    n, 1.0 / 3, origin, [](int, int, int) { return true; }, ppiray_test::Blob);
+  int errors = 0;
+
+  const Outcome reference = RenderGrid(good);
+  errors += Expect(reference.Errors.empty() && Lit(reference.Image) > 1000, "good grid renders");
+
+  vtkNew<vtkUnstructuredGrid> empty;
+  const Outcome e = RenderGrid(empty);
+  errors += Expect(e.Errors.empty() && Lit(e.Image) == 0, "empty grid: nothing, no error");
+
+  vtkNew<vtkUnstructuredGrid> noScalars;
+  noScalars->DeepCopy(good);
+  noScalars->GetPointData()->RemoveArray("s");
+  const Outcome ns = RenderGrid(noScalars);
+  std::cout << "no scalars: " << ns.Errors << "\n";
+  errors += Expect(ns.Errors.find("No scalars") != std::string::npos && Lit(ns.Image) == 0,
+    "no scalars: error, nothing drawn");
+
+  vtkNew<vtkUnstructuredGrid> nan;
+  nan->DeepCopy(good);
+  nan->GetPointData()->GetScalars()->SetTuple1(0, std::numeric_limits<double>::quiet_NaN());
+  const Outcome nn = RenderGrid(nan);
+  std::cout << "NaN scalars: " << nn.Warnings << "\n";
+  const auto d = ppiray_test::Compare(reference.Image, nn.Image);
+  errors += Expect(nn.Warnings.find("NaN") != std::string::npos && d.Max > 0 &&
+      Lit(nn.Image) > 1000,
+    "NaN scalars: warning, the touching cells change, the rest renders");
+
+  // Hexahedra only.
+  vtkNew<vtkUnstructuredGrid> hexes;
+  vtkNew<vtkPoints> points;
+  for (int i = 0; i < 8; ++i)
+  {
+    points->InsertNextPoint(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  }
+  hexes->SetPoints(points);
+  const vtkIdType hex[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
+  hexes->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+  vtkNew<vtkDoubleArray> hexScalars;
+  for (int i = 0; i < 8; ++i)
+  {
+    hexScalars->InsertNextValue(0.1 * i);
+  }
+  hexes->GetPointData()->SetScalars(hexScalars);
+  const Outcome h = RenderGrid(hexes);
+  std::cout << "hexahedra: " << h.Errors << "\n";
+  errors += Expect(h.Errors.find("1 vtkHexahedron") != std::string::npos && Lit(h.Image) == 0,
+    "hexahedra only: error naming type and count, nothing drawn");
+
+  // Tetrahedra plus one hexahedron: error, the tetrahedra still render.
+  vtkNew<vtkUnstructuredGrid> mixed;
+  mixed->DeepCopy(good);
+  const vtkIdType mixedHex[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
+  mixed->InsertNextCell(VTK_HEXAHEDRON, 8, mixedHex);
+  const Outcome m = RenderGrid(mixed);
+  errors += Expect(m.Errors.find("1 vtkHexahedron") != std::string::npos &&
+      ppiray_test::Compare(reference.Image, m.Image).Max == 0,
+    "mixed: error, tetrahedra render unchanged");
+
+  // A zero-volume tetrahedron added: warning, image unchanged.
+  vtkNew<vtkUnstructuredGrid> flat;
+  flat->DeepCopy(good);
+  vtkIdType flatIds[4];
+  const double corners[4][3] = { { 0.2, 0.2, 0.5 }, { 0.8, 0.2, 0.5 }, { 0.2, 0.8, 0.5 },
+    { 0.8, 0.8, 0.5 } };
+  for (int v = 0; v < 4; ++v)
+  {
+    flatIds[v] = flat->GetPoints()->InsertNextPoint(corners[v]);
+    flat->GetPointData()->GetScalars()->InsertNextTuple1(1.0);
+  }
+  flat->InsertNextCell(VTK_TETRA, 4, flatIds);
+  const Outcome f = RenderGrid(flat);
+  std::cout << "flat: " << f.Warnings << "\n";
+  errors += Expect(f.Warnings.find("zero-volume") != std::string::npos &&
+      ppiray_test::Compare(reference.Image, f.Image).Max <= 1,
+    "zero-volume tetrahedron: warning, image unchanged");
+  return errors == 0 ? 0 : 1;
+}

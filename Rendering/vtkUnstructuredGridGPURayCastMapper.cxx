@@ -1,0 +1,739 @@
+#include "vtkUnstructuredGridGPURayCastMapper.h"
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellTypes.h"
+#include "vtkDataArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPPIRayBufferTexture.h"
+#include "vtkPoints.h"
+#include "vtkPsiTable.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTetrahedralCellTextures.h"
+#include "vtkTextureObject.h"
+#include "vtkTransferFunctionControlPoints.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtk_glew.h"
+
+#include "composite_fs.h"
+#include "entry_fs.h"
+#include "entry_vs.h"
+#include "integrate_ppi_fs.h"
+#include "march_fs.h"
+#include "ray_fs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkUnstructuredGridGPURayCastMapper);
+
+//------------------------------------------------------------------------------
+// Everything the mapper caches: CPU-side cell textures and control points, and
+// their GPU copies, plus the render targets and programs of the three passes.
+class vtkUnstructuredGridGPURayCastMapper::vtkInternals
+{
+public:
+  // CPU caches and what they were built from.
+  vtkNew<vtkTetrahedralCellTextures> Cells;
+  vtkNew<vtkTransferFunctionControlPoints> ControlPoints;
+  vtkNew<vtkUnstructuredGrid> InputCopy; // when the input is not a vtkUnstructuredGrid
+  vtkUnstructuredGridBase* GeometryInput = nullptr;
+  vtkTimeStamp GeometryTime;
+  bool GeometryValid = false;
+  vtkDataArray* FieldArray = nullptr;
+  int FieldCellFlag = -1;
+  vtkTimeStamp FieldTime;
+  vtkVolumeProperty* Property = nullptr;
+  vtkTimeStamp TransferFunctionTime;
+
+  // GPU copies: valid while the flag is set.
+  bool GeometryOnGPU = false;
+  bool FieldOnGPU = false;
+  bool TransferFunctionOnGPU = false;
+  vtkPPIRayBufferTexture Planes;
+  vtkPPIRayBufferTexture Neighbors;
+  vtkPPIRayBufferTexture Field;
+  vtkPPIRayBufferTexture BoundaryFaces;
+  vtkPPIRayBufferTexture ControlPointTexels;
+  vtkNew<vtkOpenGLBufferObject> BoundaryPoints;
+  vtkNew<vtkOpenGLBufferObject> BoundaryTriangles;
+  size_t BoundaryBytes = 0;
+  vtkNew<vtkOpenGLVertexArrayObject> EntryVAO;
+  vtkNew<vtkTextureObject> PsiTexture;
+  int PsiTextureSize = 0;
+
+  // Render targets, sized to the viewport.
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkNew<vtkTextureObject> EntryTexture;
+  vtkNew<vtkTextureObject> Accumulated[2]; // ping-pong: colour so far
+  vtkNew<vtkTextureObject> Exit[2];        // ping-pong: where the last march stopped
+  vtkNew<vtkTextureObject> LayerDepth[2];
+  vtkNew<vtkTextureObject> OpaqueDepth;
+  int TargetSize[2] = { 0, 0 };
+  unsigned int Query = 0;
+
+  // Programs.
+  vtkShaderProgram* EntryProgram = nullptr;
+  std::unique_ptr<vtkOpenGLQuadHelper> MarchQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+
+  size_t TargetBytes() const
+  {
+    // entry id (R32F), 2 accumulated (RGBA32F), 2 exit (R32F), 3 depth (32F).
+    return static_cast<size_t>(this->TargetSize[0]) * this->TargetSize[1] *
+      (4 + 2 * 16 + 2 * 4 + 3 * 4);
+  }
+
+  void ReleaseGraphicsResources(vtkWindow* window)
+  {
+    this->Planes.ReleaseGraphicsResources(window);
+    this->Neighbors.ReleaseGraphicsResources(window);
+    this->Field.ReleaseGraphicsResources(window);
+    this->BoundaryFaces.ReleaseGraphicsResources(window);
+    this->ControlPointTexels.ReleaseGraphicsResources(window);
+    this->BoundaryPoints->ReleaseGraphicsResources();
+    this->BoundaryTriangles->ReleaseGraphicsResources();
+    this->BoundaryBytes = 0;
+    this->EntryVAO->ReleaseGraphicsResources();
+    this->PsiTexture->ReleaseGraphicsResources(window);
+    this->PsiTextureSize = 0;
+    this->Framebuffer->ReleaseGraphicsResources(window);
+    this->EntryTexture->ReleaseGraphicsResources(window);
+    for (int i = 0; i < 2; ++i)
+    {
+      this->Accumulated[i]->ReleaseGraphicsResources(window);
+      this->Exit[i]->ReleaseGraphicsResources(window);
+    }
+    this->LayerDepth[0]->ReleaseGraphicsResources(window);
+    this->LayerDepth[1]->ReleaseGraphicsResources(window);
+    this->OpaqueDepth->ReleaseGraphicsResources(window);
+    this->TargetSize[0] = this->TargetSize[1] = 0;
+    if (this->Query)
+    {
+      glDeleteQueries(1, &this->Query);
+      this->Query = 0;
+    }
+    this->EntryProgram = nullptr; // owned by the shader cache
+    if (this->MarchQuad)
+    {
+      this->MarchQuad->ReleaseGraphicsResources(window);
+      this->MarchQuad.reset();
+    }
+    if (this->CompositeQuad)
+    {
+      this->CompositeQuad->ReleaseGraphicsResources(window);
+      this->CompositeQuad.reset();
+    }
+    this->GeometryOnGPU = this->FieldOnGPU = this->TransferFunctionOnGPU = false;
+  }
+};
+
+namespace
+{
+// Column-major float copy of a row-major VTK matrix, for glUniformMatrix4fv.
+void ColumnMajor(vtkMatrix4x4* m, float out[16])
+{
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      out[4 * c + r] = static_cast<float>(m->GetElement(r, c));
+    }
+  }
+}
+
+std::string UnsupportedCellsMessage(const std::vector<vtkIdType>& unsupported)
+{
+  std::ostringstream message;
+  for (size_t i = 0; i < unsupported.size(); i += 2)
+  {
+    message << (i ? ", " : "") << unsupported[i + 1] << " "
+            << vtkCellTypes::GetClassNameFromTypeId(static_cast<int>(unsupported[i]));
+  }
+  return message.str();
+}
+
+bool AllocateTarget(vtkTextureObject* texture, vtkOpenGLRenderWindow* context, int w, int h,
+  int components)
+{
+  texture->SetContext(context);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  return texture->Allocate2D(w, h, components, VTK_FLOAT);
+}
+
+bool AllocateDepthTarget(vtkTextureObject* texture, vtkOpenGLRenderWindow* context, int w, int h)
+{
+  texture->SetContext(context);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  return texture->AllocateDepth(w, h, vtkTextureObject::Float32);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkUnstructuredGridGPURayCastMapper::vtkUnstructuredGridGPURayCastMapper()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkUnstructuredGridGPURayCastMapper::~vtkUnstructuredGridGPURayCastMapper() = default;
+
+//------------------------------------------------------------------------------
+vtkIdType vtkUnstructuredGridGPURayCastMapper::GetNumberOfTetrahedra()
+{
+  auto& cells = *this->Internals->Cells;
+  return cells.GetNumberOfTetrahedra() - cells.GetNumberOfDegenerateTetrahedra();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkUnstructuredGridGPURayCastMapper::GetGPUMemorySize()
+{
+  vtkInternals& in = *this->Internals;
+  size_t bytes = in.Planes.GetBytes() + in.Neighbors.GetBytes() + in.Field.GetBytes() +
+    in.BoundaryFaces.GetBytes() + in.ControlPointTexels.GetBytes() + in.BoundaryBytes +
+    static_cast<size_t>(in.PsiTextureSize) * in.PsiTextureSize * sizeof(float) +
+    in.TargetBytes();
+  return static_cast<vtkIdType>(bytes);
+}
+
+//------------------------------------------------------------------------------
+void vtkUnstructuredGridGPURayCastMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Internals->ReleaseGraphicsResources(window);
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+//------------------------------------------------------------------------------
+bool vtkUnstructuredGridGPURayCastMapper::UpdateGeometry(vtkUnstructuredGridBase* input)
+{
+  vtkInternals& in = *this->Internals;
+  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(input);
+  vtkMTimeType sourceTime = input->GetPoints() ? input->GetPoints()->GetMTime() : 0;
+  if (grid && grid->GetCells())
+  {
+    sourceTime = std::max(sourceTime, grid->GetCells()->GetMTime());
+  }
+  else
+  {
+    sourceTime = std::max(sourceTime, input->GetMTime());
+  }
+  if (in.GeometryInput == input && sourceTime <= in.GeometryTime.GetMTime())
+  {
+    return in.GeometryValid;
+  }
+  in.GeometryInput = input;
+  in.GeometryTime.Modified();
+  in.GeometryOnGPU = false;
+  in.FieldArray = nullptr; // the field follows the geometry
+  if (!grid)
+  {
+    in.InputCopy->DeepCopy(input);
+    grid = in.InputCopy;
+  }
+  in.GeometryValid = in.Cells->BuildGeometry(grid);
+  vtkTetrahedralCellTextures& cells = *in.Cells;
+  if (cells.GetNumberOfUnsupportedCells() > 0)
+  {
+    vtkErrorMacro("Only tetrahedra are supported; skipped "
+      << cells.GetNumberOfUnsupportedCells()
+      << " cells of other types: " << UnsupportedCellsMessage(cells.GetUnsupportedCellTypes()));
+  }
+  if (!in.GeometryValid)
+  {
+    vtkErrorMacro("No tetrahedra to render (" << input->GetNumberOfCells() << " cells).");
+    return false;
+  }
+  if (cells.GetNumberOfTetrahedra() > (VTK_INT_MAX / 4) ||
+    cells.GetBoundaryFaces().size() > (1u << 24))
+  {
+    vtkErrorMacro("Mesh too large: " << cells.GetNumberOfTetrahedra() << " tetrahedra and "
+                                     << cells.GetBoundaryFaces().size()
+                                     << " boundary faces (limits 536870911 and 16777216).");
+    in.GeometryValid = false;
+    return false;
+  }
+  if (cells.GetNumberOfDegenerateTetrahedra() > 0)
+  {
+    vtkWarningMacro(<< cells.GetNumberOfDegenerateTetrahedra()
+                    << " zero-volume tetrahedra skipped.");
+  }
+  if (cells.GetNumberOfNonManifoldFaces() > 0)
+  {
+    vtkWarningMacro(<< cells.GetNumberOfNonManifoldFaces()
+                    << " faces are shared by more than two tetrahedra (non-manifold mesh).");
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkUnstructuredGridGPURayCastMapper::UpdateField(vtkUnstructuredGridBase* input)
+{
+  vtkInternals& in = *this->Internals;
+  int cellFlag = 0;
+  vtkDataArray* scalars = vtkDataArray::SafeDownCast(vtkAbstractMapper::GetScalars(input,
+    this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag));
+  if (!scalars)
+  {
+    if (in.FieldArray || in.FieldCellFlag != -2)
+    {
+      vtkErrorMacro("No scalars to render: the input has no "
+        << (this->ArrayName && *this->ArrayName ? this->ArrayName : "active")
+        << " point or cell scalar array.");
+    }
+    in.FieldArray = nullptr;
+    in.FieldCellFlag = -2;
+    return false;
+  }
+  if (in.FieldArray == scalars && in.FieldCellFlag == cellFlag &&
+    scalars->GetMTime() <= in.FieldTime.GetMTime())
+  {
+    return true;
+  }
+  if (scalars->GetNumberOfComponents() > 1)
+  {
+    vtkWarningMacro("Scalar array " << (scalars->GetName() ? scalars->GetName() : "")
+                                    << " has " << scalars->GetNumberOfComponents()
+                                    << " components; rendering the first.");
+  }
+  in.FieldArray = scalars;
+  in.FieldCellFlag = cellFlag;
+  in.FieldTime.Modified();
+  in.FieldOnGPU = false;
+  in.Cells->BuildField(scalars, cellFlag == 1, 0);
+  if (in.Cells->GetNumberOfNaNScalars() > 0)
+  {
+    vtkWarningMacro(<< in.Cells->GetNumberOfNaNScalars()
+                    << " tetrahedra have NaN scalars; they are rendered empty.");
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkUnstructuredGridGPURayCastMapper::UpdateTransferFunction(vtkVolumeProperty* property)
+{
+  vtkInternals& in = *this->Internals;
+  if (in.Property == property && property->GetMTime() <= in.TransferFunctionTime.GetMTime())
+  {
+    return in.ControlPoints->GetNumberOfControlPoints() > 0;
+  }
+  in.Property = property;
+  in.TransferFunctionTime.Modified();
+  in.TransferFunctionOnGPU = false;
+  if (!in.ControlPoints->Build(property, 0))
+  {
+    vtkErrorMacro("The volume property has no scalar opacity function.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkUnstructuredGridGPURayCastMapper::UploadToGPU(vtkOpenGLRenderWindow* context)
+{
+  vtkInternals& in = *this->Internals;
+  vtkTetrahedralCellTextures& cells = *in.Cells;
+  const size_t tets = static_cast<size_t>(cells.GetNumberOfTetrahedra());
+  if (!in.GeometryOnGPU)
+  {
+    bool ok = in.Planes.Upload(context, cells.GetFacePlanes().data(), 4 * tets, 4, VTK_FLOAT) &&
+      in.Neighbors.Upload(context, cells.GetNeighbors().data(), tets, 4, VTK_INT) &&
+      in.BoundaryFaces.Upload(context, cells.GetBoundaryFaces().data(),
+        cells.GetBoundaryFaces().size(), 1, VTK_INT) &&
+      in.BoundaryPoints->Upload(cells.GetBoundaryPoints(), vtkOpenGLBufferObject::ArrayBuffer) &&
+      in.BoundaryTriangles->Upload(
+        cells.GetBoundaryTriangles(), vtkOpenGLBufferObject::ElementArrayBuffer);
+    if (!ok)
+    {
+      vtkErrorMacro("Could not upload the mesh to the GPU (" << tets << " tetrahedra).");
+      return false;
+    }
+    in.BoundaryBytes = sizeof(float) * cells.GetBoundaryPoints().size() +
+      sizeof(unsigned int) * cells.GetBoundaryTriangles().size();
+    in.EntryProgram = nullptr; // re-bind the vertex array to the new buffer
+    in.GeometryOnGPU = true;
+    ++this->GeometryUploadCount;
+  }
+  if (!in.FieldOnGPU)
+  {
+    if (!in.Field.Upload(context, cells.GetField().data(), tets, 4, VTK_FLOAT))
+    {
+      vtkErrorMacro("Could not upload the scalar field to the GPU.");
+      return false;
+    }
+    in.FieldOnGPU = true;
+    ++this->FieldUploadCount;
+  }
+  if (!in.TransferFunctionOnGPU)
+  {
+    const std::vector<float> texels = in.ControlPoints->GetTexels();
+    if (!in.ControlPointTexels.Upload(context, texels.data(), texels.size() / 4, 4, VTK_FLOAT))
+    {
+      vtkErrorMacro("Could not upload the transfer function to the GPU.");
+      return false;
+    }
+    in.TransferFunctionOnGPU = true;
+    ++this->TransferFunctionUploadCount;
+  }
+  if (in.PsiTextureSize != this->PsiTableSize)
+  {
+    const std::vector<float>& table = vtkPsiTable::GetTable(this->PsiTableSize);
+    in.PsiTexture->SetContext(context);
+    in.PsiTexture->SetMinificationFilter(vtkTextureObject::Linear);
+    in.PsiTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+    in.PsiTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    in.PsiTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    in.PsiTexture->Create2DFromRaw(this->PsiTableSize, this->PsiTableSize, 1, VTK_FLOAT,
+      const_cast<float*>(table.data()));
+    in.PsiTextureSize = this->PsiTableSize;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkUnstructuredGridGPURayCastMapper::PrepareTargets(
+  vtkOpenGLRenderWindow* context, int width, int height)
+{
+  vtkInternals& in = *this->Internals;
+  if (in.TargetSize[0] != width || in.TargetSize[1] != height)
+  {
+    bool ok = AllocateTarget(in.EntryTexture, context, width, height, 1) &&
+      AllocateTarget(in.Accumulated[0], context, width, height, 4) &&
+      AllocateTarget(in.Accumulated[1], context, width, height, 4) &&
+      AllocateTarget(in.Exit[0], context, width, height, 1) &&
+      AllocateTarget(in.Exit[1], context, width, height, 1) &&
+      AllocateDepthTarget(in.LayerDepth[0], context, width, height) &&
+      AllocateDepthTarget(in.LayerDepth[1], context, width, height) &&
+      AllocateDepthTarget(in.OpaqueDepth, context, width, height);
+    if (!ok)
+    {
+      vtkErrorMacro("Could not allocate " << width << "x" << height << " render targets.");
+      in.TargetSize[0] = in.TargetSize[1] = 0;
+      return false;
+    }
+    in.TargetSize[0] = width;
+    in.TargetSize[1] = height;
+  }
+  in.Framebuffer->SetContext(context);
+  if (!in.Query)
+  {
+    glGenQueries(1, &in.Query);
+  }
+
+  vtkOpenGLShaderCache* cache = context->GetShaderCache();
+  if (!in.EntryProgram)
+  {
+    std::string entry = entry_fs;
+    vtkShaderProgram::Substitute(entry, "//PPIRay::Ray::Impl", ray_fs);
+    in.EntryProgram = cache->ReadyShaderProgram(entry_vs, entry.c_str(), "");
+    if (!in.EntryProgram)
+    {
+      vtkErrorMacro("Could not build the entry shader.");
+      return false;
+    }
+    in.EntryVAO->Bind();
+    in.EntryVAO->AddAttributeArray(
+      in.EntryProgram, in.BoundaryPoints, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    in.EntryVAO->Release();
+  }
+  else
+  {
+    cache->ReadyShaderProgram(in.EntryProgram);
+  }
+  if (!in.MarchQuad)
+  {
+    std::string march = march_fs;
+    vtkShaderProgram::Substitute(march, "//PPIRay::Integrate::Impl", integrate_ppi_fs);
+    vtkShaderProgram::Substitute(march, "//PPIRay::Ray::Impl", ray_fs);
+    in.MarchQuad.reset(new vtkOpenGLQuadHelper(context, nullptr, march.c_str(), ""));
+  }
+  else
+  {
+    cache->ReadyShaderProgram(in.MarchQuad->Program);
+  }
+  if (!in.CompositeQuad)
+  {
+    in.CompositeQuad.reset(new vtkOpenGLQuadHelper(context, nullptr, composite_fs, ""));
+  }
+  if (!in.MarchQuad->Program || !in.CompositeQuad->Program)
+  {
+    vtkErrorMacro("Could not build the march or composite shader.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+{
+  this->NumberOfPeels = 0;
+  if (this->GetInputAlgorithm())
+  {
+    this->GetInputAlgorithm()->Update();
+  }
+  vtkUnstructuredGridBase* input = this->GetInput();
+  vtkOpenGLRenderWindow* context = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!input || !context || !vol || !vol->GetProperty())
+  {
+    vtkErrorMacro("Nothing to render: " << (!input ? "no input" : "no OpenGL window or property"));
+    return;
+  }
+  if (input->GetNumberOfCells() == 0 || input->GetNumberOfPoints() == 0)
+  {
+    // An empty grid is a valid scene: nothing to draw.
+    return;
+  }
+  if (this->BlendMode != vtkUnstructuredGridVolumeMapper::COMPOSITE_BLEND)
+  {
+    vtkWarningMacro("Only composite blending is supported; rendering composite.");
+  }
+  if (!this->UpdateGeometry(input) || !this->UpdateField(input) ||
+    !this->UpdateTransferFunction(vol->GetProperty()))
+  {
+    return;
+  }
+  if (!this->UploadToGPU(context))
+  {
+    return;
+  }
+  this->RenderPasses(ren, vol, context);
+}
+
+//------------------------------------------------------------------------------
+void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
+  vtkRenderer* ren, vtkVolume* vol, vtkOpenGLRenderWindow* context)
+{
+  vtkInternals& in = *this->Internals;
+  int width, height, x0, y0;
+  ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  if (width <= 0 || height <= 0 || !this->PrepareTargets(context, width, height))
+  {
+    return;
+  }
+
+  // Matrices: local frame (mesh coordinates minus the centre of its bounds) to
+  // clip space, and back, composed in double precision.
+  const double* origin = in.Cells->GetOrigin();
+  vtkNew<vtkMatrix4x4> localToClip;
+  localToClip->Identity();
+  for (int i = 0; i < 3; ++i)
+  {
+    localToClip->SetElement(i, 3, origin[i]);
+  }
+  vtkMatrix4x4::Multiply4x4(vol->GetMatrix(), localToClip, localToClip);
+  vtkMatrix4x4* worldToClip =
+    ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1);
+  vtkMatrix4x4::Multiply4x4(worldToClip, localToClip, localToClip);
+  vtkNew<vtkMatrix4x4> clipToLocal;
+  vtkMatrix4x4::Invert(localToClip, clipToLocal);
+  float localToClipF[16], clipToLocalF[16];
+  ColumnMajor(localToClip, localToClipF);
+  ColumnMajor(clipToLocal, clipToLocalF);
+
+  const vtkIdType tets = in.Cells->GetNumberOfTetrahedra();
+  const int maximumSteps = this->MaximumNumberOfSteps > 0
+    ? this->MaximumNumberOfSteps
+    : static_cast<int>(std::min<double>(
+        tets + 1.0, std::max(1024.0, 64.0 * std::cbrt(static_cast<double>(tets)))));
+
+  // Save what we change; the Scoped objects restore it on return.
+  vtkOpenGLState* state = context->GetState();
+  vtkOpenGLState::ScopedglViewport savedViewport(state);
+  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlend(state);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+  vtkOpenGLState::ScopedglClearColor savedClearColor(state);
+  vtkOpenGLState::ScopedglColorMask savedColorMask(state);
+  vtkOpenGLState::ScopedglEnableDisable savedBlendEnable(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedCullFace(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
+  int savedDepthFunc = GL_LESS, savedCullFaceMode = GL_BACK;
+  state->vtkglGetIntegerv(GL_DEPTH_FUNC, &savedDepthFunc);
+  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &savedCullFaceMode);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+
+  // Opaque depth: VTK's depth buffer under this renderer's viewport.
+  state->PushFramebufferBindings();
+  int drawFramebuffer = 0, samples = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
+  glGetIntegerv(GL_SAMPLES, &samples);
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawFramebuffer);
+  bool haveOpaqueDepth = samples == 0;
+  if (haveOpaqueDepth)
+  {
+    in.OpaqueDepth->CopyFromFrameBuffer(x0, y0, 0, 0, width, height);
+  }
+
+  vtkOpenGLFramebufferObject* fbo = in.Framebuffer;
+  fbo->Bind();
+  state->vtkglViewport(0, 0, width, height);
+  if (!haveOpaqueDepth)
+  {
+    // Multisampled framebuffers cannot be copied from: no opaque geometry.
+    fbo->AddDepthAttachment(in.OpaqueDepth);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    vtkWarningMacro("Multisampled framebuffer: opaque geometry does not stop the rays.");
+  }
+  // Nothing accumulated yet; no march has stopped anywhere.
+  int current = 0;
+  fbo->AddColorAttachment(0, in.Accumulated[current]);
+  fbo->AddColorAttachment(1, in.Exit[current]);
+  fbo->ActivateDrawBuffers(2);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  fbo->RemoveColorAttachment(1);
+
+  const float terminationAlpha = static_cast<float>(this->TerminationOpacity);
+  const float exitTolerance = static_cast<float>(1e-5 * in.Cells->GetLength());
+  const float viewportSize[2] = { static_cast<float>(width), static_cast<float>(height) };
+  vtkShaderProgram* march = in.MarchQuad->Program;
+  int layer = 0;
+  GLuint samplesPassed = 0;
+  int peel = 0;
+  for (; peel < this->MaximumNumberOfPeels; ++peel)
+  {
+    // Entry pass: the next layer of front-facing boundary triangles.
+    fbo->AddColorAttachment(0, in.EntryTexture);
+    fbo->AddDepthAttachment(in.LayerDepth[layer]);
+    fbo->ActivateDrawBuffers(1);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_LESS);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglEnable(GL_CULL_FACE);
+    state->vtkglCullFace(GL_BACK);
+
+    context->GetShaderCache()->ReadyShaderProgram(in.EntryProgram);
+    vtkShaderProgram* entry = in.EntryProgram;
+    vtkTextureObject* entryInputs[] = { in.LayerDepth[1 - layer], in.Exit[current], in.OpaqueDepth,
+      in.Accumulated[current] };
+    const char* entryNames[] = { "previousLayerDepth", "previousExit", "opaqueDepth",
+      "accumulated" };
+    for (int i = 0; i < 4; ++i)
+    {
+      entryInputs[i]->Activate();
+      entry->SetUniformi(entryNames[i], entryInputs[i]->GetTextureUnit());
+    }
+    entry->SetUniformMatrix4x4("localToClip", localToClipF);
+    entry->SetUniformMatrix4x4("clipToLocal", clipToLocalF);
+    entry->SetUniform2f("viewportSize", viewportSize);
+    entry->SetUniformi("firstLayer", peel == 0 ? 1 : 0);
+    entry->SetUniformf("terminationAlpha", terminationAlpha);
+    entry->SetUniformf("exitTolerance", exitTolerance);
+    in.EntryVAO->Bind();
+    in.BoundaryTriangles->Bind();
+    glBeginQuery(GL_SAMPLES_PASSED, in.Query);
+    glDrawElements(GL_TRIANGLES,
+      static_cast<GLsizei>(in.Cells->GetBoundaryTriangles().size()), GL_UNSIGNED_INT, nullptr);
+    glEndQuery(GL_SAMPLES_PASSED);
+    in.BoundaryTriangles->Release();
+    in.EntryVAO->Release();
+    for (auto* texture : entryInputs)
+    {
+      texture->Deactivate();
+    }
+    glGetQueryObjectuiv(in.Query, GL_QUERY_RESULT, &samplesPassed);
+    if (samplesPassed == 0)
+    {
+      break;
+    }
+
+    // March pass: integrate from the entry cell to where the ray leaves the
+    // mesh, composited under what earlier peels accumulated (ping-pong).
+    const int next = 1 - current;
+    fbo->RemoveDepthAttachment();
+    fbo->AddColorAttachment(0, in.Accumulated[next]);
+    fbo->AddColorAttachment(1, in.Exit[next]);
+    fbo->ActivateDrawBuffers(2);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_CULL_FACE);
+
+    context->GetShaderCache()->ReadyShaderProgram(march);
+    vtkTextureObject* textures[] = { in.Planes.GetTexture(), in.Neighbors.GetTexture(),
+      in.Field.GetTexture(), in.BoundaryFaces.GetTexture(), in.ControlPointTexels.GetTexture(),
+      in.EntryTexture, in.OpaqueDepth, in.PsiTexture, in.Accumulated[current],
+      in.Exit[current] };
+    const char* names[] = { "facePlanes", "neighbors", "field", "boundaryFaces", "controlPoints",
+      "entryTriangle", "opaqueDepth", "psiTable", "previousAccumulated", "previousExit" };
+    for (int i = 0; i < 10; ++i)
+    {
+      textures[i]->Activate();
+      march->SetUniformi(names[i], textures[i]->GetTextureUnit());
+    }
+    march->SetUniformi("numberOfControlPoints", in.ControlPoints->GetNumberOfControlPoints());
+    march->SetUniformMatrix4x4("clipToLocal", clipToLocalF);
+    march->SetUniformi("maximumSteps", maximumSteps);
+    march->SetUniformf("terminationAlpha", terminationAlpha);
+    march->SetUniformf("psiTableSize", static_cast<float>(in.PsiTextureSize));
+    in.MarchQuad->Render();
+    for (auto* texture : textures)
+    {
+      texture->Deactivate();
+    }
+    fbo->RemoveColorAttachment(1);
+    current = next;
+    layer = 1 - layer;
+  }
+  this->NumberOfPeels = peel;
+  if (peel == this->MaximumNumberOfPeels && samplesPassed > 0)
+  {
+    vtkWarningMacro("Stopped after MaximumNumberOfPeels = "
+      << this->MaximumNumberOfPeels << " depth peels; parts of the mesh may be missing.");
+  }
+  fbo->RemoveDepthAttachment();
+  state->PopFramebufferBindings();
+
+  // Composite the volume over VTK's framebuffer.
+  state->vtkglViewport(x0, y0, width, height);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  state->vtkglDepthMask(GL_FALSE);
+  context->GetShaderCache()->ReadyShaderProgram(in.CompositeQuad->Program);
+  in.Accumulated[current]->Activate();
+  in.CompositeQuad->Program->SetUniformi(
+    "accumulated", in.Accumulated[current]->GetTextureUnit());
+  in.CompositeQuad->Render();
+  in.Accumulated[current]->Deactivate();
+
+  state->vtkglDepthFunc(savedDepthFunc);
+  state->vtkglCullFace(savedCullFaceMode);
+}
+
+//------------------------------------------------------------------------------
+void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MaximumNumberOfPeels: " << this->MaximumNumberOfPeels << "\n";
+  os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
+  os << indent << "PsiTableSize: " << this->PsiTableSize << "\n";
+  os << indent << "TerminationOpacity: " << this->TerminationOpacity << "\n";
+  os << indent << "NumberOfPeels: " << this->NumberOfPeels << "\n";
+  os << indent << "GeometryUploadCount: " << this->GeometryUploadCount << "\n";
+  os << indent << "FieldUploadCount: " << this->FieldUploadCount << "\n";
+  os << indent << "TransferFunctionUploadCount: " << this->TransferFunctionUploadCount << "\n";
+}

@@ -1,0 +1,143 @@
+/**
+ * @class   vtkUnstructuredGridGPURayCastMapper
+ * @brief   GPU ray casting of tetrahedral grids with partial pre-integration
+ *
+ * A drop-in vtkUnstructuredGridVolumeMapper: rays march from cell to cell in a
+ * fragment shader (Weiler et al. 2003; Espinha & Celes 2005) and integrate the
+ * volume rendering equation exactly for linear cells and a piecewise-linear
+ * transfer function: every ray segment is split at every transfer function
+ * control point it crosses and integrated with Moreland and Angel's partial
+ * pre-integration (Psi table). Depth peeling of the boundary re-enters
+ * non-convex meshes, meshes with holes and disconnected parts.
+ *
+ * Semantics are those of VTK's unstructured volume mappers: attenuation
+ * tau(s) = opacity(s) / ScalarOpacityUnitDistance, emission colour(s) tau(s).
+ * Scalars are chosen with the vtkAbstractVolumeMapper API (SetScalarMode,
+ * SelectScalarArray); point or cell data; the first component is used.
+ * Opaque geometry already in the depth buffer stops the rays.
+ *
+ * Caches, each rebuilt for one reason (counted, see Get*UploadCount()):
+ * geometry (planes, neighbours, boundary) when points or cells change; the
+ * field when the scalars change; the transfer function when the volume
+ * property changes; the Psi table once.
+ *
+ * Supported today: tetrahedra (other cells are reported and skipped),
+ * composite blending, perspective and parallel cameras.
+ */
+#ifndef vtkUnstructuredGridGPURayCastMapper_h
+#define vtkUnstructuredGridGPURayCastMapper_h
+
+#include "ppirayRenderingModule.h" // for export macro
+#include "vtkUnstructuredGridVolumeMapper.h"
+
+#include <memory> // for std::unique_ptr
+
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
+class vtkUnstructuredGridBase;
+class vtkVolumeProperty;
+class vtkVolume;
+class vtkWindow;
+
+class PPIRAYRENDERING_EXPORT vtkUnstructuredGridGPURayCastMapper
+  : public vtkUnstructuredGridVolumeMapper
+{
+public:
+  static vtkUnstructuredGridGPURayCastMapper* New();
+  vtkTypeMacro(vtkUnstructuredGridGPURayCastMapper, vtkUnstructuredGridVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Upper bound on depth-peeling passes per frame (default 64). A mesh that
+   * needs more is cut there, with a warning.
+   */
+  vtkSetClampMacro(MaximumNumberOfPeels, int, 1, 4096);
+  vtkGetMacro(MaximumNumberOfPeels, int);
+  ///@}
+
+  ///@{
+  /**
+   * Upper bound on cells one ray visits per peel; 0 (default) chooses
+   * max(1024, 64 * cbrt(number of tetrahedra)). Keeps every shader loop bounded.
+   */
+  vtkSetClampMacro(MaximumNumberOfSteps, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumNumberOfSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Resolution of the Psi table (default 512: bilinear lookup error below
+   * 1e-4 over the table, see Documentation/algorithms.md).
+   */
+  vtkSetClampMacro(PsiTableSize, int, 16, 4096);
+  vtkGetMacro(PsiTableSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Opacity at which a ray stops (early ray termination, default 0.999).
+   */
+  vtkSetClampMacro(TerminationOpacity, double, 0.5, 1.0);
+  vtkGetMacro(TerminationOpacity, double);
+  ///@}
+
+  /**
+   * Number of peels the last frame needed.
+   */
+  vtkGetMacro(NumberOfPeels, int);
+
+  /**
+   * Bytes this mapper holds on the GPU (cell textures, boundary, transfer
+   * function, Psi table, render targets).
+   */
+  vtkIdType GetGPUMemorySize();
+
+  ///@{
+  /**
+   * How many times each cache was (re)built and uploaded: lets tests assert
+   * that a transfer function edit did not re-upload the geometry.
+   */
+  vtkGetMacro(GeometryUploadCount, int);
+  vtkGetMacro(FieldUploadCount, int);
+  vtkGetMacro(TransferFunctionUploadCount, int);
+  ///@}
+
+  /**
+   * Number of tetrahedra rendered (after skipping unsupported and flat cells).
+   */
+  vtkIdType GetNumberOfTetrahedra();
+
+  void Render(vtkRenderer* ren, vtkVolume* vol) override;
+  void ReleaseGraphicsResources(vtkWindow*) override;
+
+protected:
+  vtkUnstructuredGridGPURayCastMapper();
+  ~vtkUnstructuredGridGPURayCastMapper() override;
+
+  int MaximumNumberOfPeels = 64;
+  int MaximumNumberOfSteps = 0;
+  int PsiTableSize = 512;
+  double TerminationOpacity = 0.999;
+  int NumberOfPeels = 0;
+  int GeometryUploadCount = 0;
+  int FieldUploadCount = 0;
+  int TransferFunctionUploadCount = 0;
+
+  // Stages of Render(), each refreshing one cache when its source changed.
+  bool UpdateGeometry(vtkUnstructuredGridBase* input);
+  bool UpdateField(vtkUnstructuredGridBase* input);
+  bool UpdateTransferFunction(vtkVolumeProperty* property);
+  bool UploadToGPU(vtkOpenGLRenderWindow* context);
+  bool PrepareTargets(vtkOpenGLRenderWindow* context, int width, int height);
+  void RenderPasses(vtkRenderer* ren, vtkVolume* vol, vtkOpenGLRenderWindow* context);
+
+private:
+  vtkUnstructuredGridGPURayCastMapper(const vtkUnstructuredGridGPURayCastMapper&) = delete;
+  void operator=(const vtkUnstructuredGridGPURayCastMapper&) = delete;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif
