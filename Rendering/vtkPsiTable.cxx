@@ -118,6 +118,12 @@ double vtkPsiTable::PsiOfGamma(double gammaFront, double gammaBack)
 }
 
 //------------------------------------------------------------------------------
+double vtkPsiTable::TableCoordinate(double tauD)
+{
+  return std::isinf(tauD) ? 1.0 : 1.0 - 1.0 / std::sqrt(tauD + 1.0);
+}
+
+//------------------------------------------------------------------------------
 const std::vector<float>& vtkPsiTable::GetTable(int size)
 {
   static std::mutex mutex;
@@ -133,8 +139,11 @@ const std::vector<float>& vtkPsiTable::GetTable(int size)
     {
       for (int i = 0; i < size; ++i)
       {
+        // u = 1 - sqrt(1 - gamma)  <=>  gamma = 1 - (1 - u)^2.
+        const double uf = static_cast<double>(i) / (size - 1);
+        const double ub = static_cast<double>(j) / (size - 1);
         table[static_cast<size_t>(j) * size + i] = static_cast<float>(
-          PsiOfGamma(static_cast<double>(i) / (size - 1), static_cast<double>(j) / (size - 1)));
+          PsiOfGamma(1.0 - (1.0 - uf) * (1.0 - uf), 1.0 - (1.0 - ub) * (1.0 - ub)));
       }
     }
   }

@@ -9,8 +9,14 @@
  *
  * is the piece's mean transparency (Moreland & Angel 2004, Sec. 4, Eq. 9).
  * It does not depend on the transfer function, so it is tabulated once per
- * process over gamma = a / (a + 1) in [0, 1]^2 (Eq. 10) and shared by every
- * mapper. Psi itself is evaluated in double precision by Gauss-Legendre
+ * process and shared by every mapper.
+ *
+ * Moreland and Angel index the table by gamma = a / (a + 1) (Eq. 10). Along
+ * gamma_b -> 1 with small a, Psi ~ sqrt(pi (1 - gamma_b) / 2): a square-root
+ * edge where bilinear lookup errs by 1e-2 at any practical size (measured in
+ * TestPsiTable). The table here is indexed by u = 1 - sqrt(1 - gamma)
+ * = 1 - 1 / sqrt(a + 1) instead, which turns that edge linear (Psi ~ 1 - u)
+ * and keeps the gamma_f -> 1 edge smooth (Psi ~ (1 - u)^2). Psi itself is evaluated in double precision by Gauss-Legendre
  * quadrature on geometrically growing sub-intervals that follow the
  * integrand's decay, accurate to about 1e-14 for every a, b >= 0.
  */
@@ -41,8 +47,13 @@ public:
   static double PsiOfGamma(double gammaFront, double gammaBack);
 
   /**
-   * The size x size table, row-major with gamma_b along rows and gamma_f along
-   * columns, texel (i, j) at gamma_f = i / (size - 1), gamma_b = j / (size - 1).
+   * The table coordinate of tau D: u = 1 - 1 / sqrt(tau D + 1) in [0, 1].
+   */
+  static double TableCoordinate(double tauD);
+
+  /**
+   * The size x size table, row-major with u_b along rows and u_f along
+   * columns, texel (i, j) at u_f = i / (size - 1), u_b = j / (size - 1).
    * Computed on first use of each size and kept for the process (thread-safe).
    */
   static const std::vector<float>& GetTable(int size);

@@ -67,8 +67,9 @@ public:
 
   ///@{
   /**
-   * Resolution of the Psi table (default 512: bilinear lookup error below
-   * 1e-4 over the table, see Documentation/algorithms.md).
+   * Resolution of the Psi table (default 512: bilinear lookup error at most
+   * 2.3e-4 in Psi, i.e. below 0.06/255 in colour; 1 MB of GPU memory; see
+   * Documentation/algorithms.md and TestPsiTable).
    */
   vtkSetClampMacro(PsiTableSize, int, 16, 4096);
   vtkGetMacro(PsiTableSize, int);

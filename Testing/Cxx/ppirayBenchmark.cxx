@@ -1,0 +1,248 @@
+// ppirayBenchmark: frame time of vtkUnstructuredGridGPURayCastMapper against
+// VTK's own unstructured volume mappers on the same scene, same machine, same
+// run. Prints one row per mapper: median ms per frame over an orbit of views
+// (after a warm-up frame; every frame ends with WaitForCompletion), tetrahedra
+// per second, GPU bytes per tetrahedron, and the speed-up of PPIRay.
+//
+//   ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]
+//                   [--views N] [--peer-views N] [--mappers ppiray,pt,raycast,zsweep]
+//
+// Default scene: vtkRTAnalyticSource over [-32, 32]^3 split into 1.31 M
+// tetrahedra (vtkDataSetTriangleFilter), 512x512, 8 views.
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataSetTriangleFilter.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkProjectedTetrahedraMapper.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkTimerLog.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridGPURayCastMapper.h"
+#include "vtkUnstructuredGridVolumeRayCastMapper.h"
+#include "vtkUnstructuredGridVolumeZSweepMapper.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtkXMLUnstructuredGridReader.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct Options
+{
+  std::string File;
+  int Wavelet = 32;
+  int Width = 512;
+  int Height = 512;
+  int Views = 8;
+  int PeerViews = 2;
+  std::string Mappers = "ppiray,pt,raycast";
+};
+
+struct Row
+{
+  std::string Name;
+  double Ms = 0;
+  int Frames = 0;
+  double GPUBytes = -1;
+};
+
+vtkSmartPointer<vtkUnstructuredGrid> LoadScene(const Options& o)
+{
+  if (!o.File.empty())
+  {
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(o.File.c_str());
+    reader->Update();
+    vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
+    if (!grid->GetPointData()->GetScalars() && grid->GetPointData()->GetNumberOfArrays())
+    {
+      grid->GetPointData()->SetActiveScalars(grid->GetPointData()->GetArrayName(0));
+    }
+    return grid;
+  }
+  vtkNew<vtkRTAnalyticSource> source;
+  const int e = o.Wavelet;
+  source->SetWholeExtent(-e, e, -e, e, -e, e);
+  vtkNew<vtkDataSetTriangleFilter> tetrahedralize;
+  tetrahedralize->SetInputConnection(source->GetOutputPort());
+  tetrahedralize->Update();
+  return tetrahedralize->GetOutput();
+}
+
+Row Measure(const std::string& name, vtkUnstructuredGridVolumeMapper* mapper,
+  vtkUnstructuredGrid* grid, const Options& o, int views)
+{
+  double range[2];
+  grid->GetPointData()->GetScalars()->GetRange(range);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(range[0], 0.23, 0.30, 0.75);
+  color->AddRGBPoint(0.5 * (range[0] + range[1]), 0.87, 0.87, 0.87);
+  color->AddRGBPoint(range[1], 0.71, 0.02, 0.15);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(range[0], 0.0);
+  opacity->AddPoint(range[1], 0.5);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  double b[6];
+  grid->GetBounds(b);
+  property->SetScalarOpacityUnitDistance((b[1] - b[0]) / 20.0);
+
+  mapper->SetInputData(grid);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddVolume(volume);
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetSize(o.Width, o.Height);
+  window->AddRenderer(renderer);
+  renderer->GetActiveCamera()->SetPosition(1.0, 0.6, 1.4);
+  renderer->ResetCamera();
+
+  window->Render(); // warm-up: uploads, shader compilation, sorting structures
+  window->WaitForCompletion();
+  std::vector<double> times;
+  vtkNew<vtkTimerLog> timer;
+  for (int v = 0; v < views; ++v)
+  {
+    renderer->GetActiveCamera()->Azimuth(360.0 / views);
+    timer->StartTimer();
+    window->Render();
+    window->WaitForCompletion();
+    timer->StopTimer();
+    times.push_back(1000.0 * timer->GetElapsedTime());
+  }
+  std::sort(times.begin(), times.end());
+  Row row;
+  row.Name = name;
+  row.Ms = times[times.size() / 2];
+  row.Frames = views;
+  if (auto* ours = vtkUnstructuredGridGPURayCastMapper::SafeDownCast(mapper))
+  {
+    row.GPUBytes = static_cast<double>(ours->GetGPUMemorySize());
+  }
+  return row;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options o;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
+    if (arg == "--file")
+    {
+      o.File = next();
+    }
+    else if (arg == "--wavelet")
+    {
+      o.Wavelet = std::stoi(next());
+    }
+    else if (arg == "--size")
+    {
+      std::sscanf(next().c_str(), "%dx%d", &o.Width, &o.Height);
+    }
+    else if (arg == "--views")
+    {
+      o.Views = std::stoi(next());
+    }
+    else if (arg == "--peer-views")
+    {
+      o.PeerViews = std::stoi(next());
+    }
+    else if (arg == "--mappers")
+    {
+      o.Mappers = next();
+    }
+    else
+    {
+      std::cout << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]"
+                   " [--views N] [--peer-views N] [--mappers ppiray,pt,raycast,zsweep]\n";
+      return arg == "--help" ? 0 : 2;
+    }
+  }
+
+  vtkSmartPointer<vtkUnstructuredGrid> grid = LoadScene(o);
+  const double tets = static_cast<double>(grid->GetNumberOfCells());
+  std::cout << "scene: " << (o.File.empty() ? "wavelet [-" + std::to_string(o.Wavelet) + ", " +
+                                 std::to_string(o.Wavelet) + "]^3 tetrahedralized"
+                                            : o.File)
+            << ", " << grid->GetNumberOfCells() << " cells, " << o.Width << "x" << o.Height
+            << "\n";
+
+  std::vector<Row> rows;
+  std::stringstream list(o.Mappers);
+  std::string name;
+  while (std::getline(list, name, ','))
+  {
+    std::cerr << "measuring " << name << " ..." << std::endl;
+    if (name == "ppiray")
+    {
+      vtkNew<vtkUnstructuredGridGPURayCastMapper> m;
+      rows.push_back(Measure("PPIRay (partial pre-integration)", m, grid, o, o.Views));
+    }
+    else if (name == "pt")
+    {
+      vtkNew<vtkProjectedTetrahedraMapper> m;
+      rows.push_back(Measure("vtkProjectedTetrahedraMapper", m, grid, o, o.Views));
+    }
+    else if (name == "raycast")
+    {
+      vtkNew<vtkUnstructuredGridVolumeRayCastMapper> m;
+      m->SetImageSampleDistance(1.0);
+      m->AutoAdjustSampleDistancesOff();
+      rows.push_back(Measure("vtkUnstructuredGridVolumeRayCastMapper", m, grid, o, o.PeerViews));
+    }
+    else if (name == "zsweep")
+    {
+      vtkNew<vtkUnstructuredGridVolumeZSweepMapper> m;
+      m->SetImageSampleDistance(1.0);
+      m->AutoAdjustSampleDistancesOff();
+      rows.push_back(Measure("vtkUnstructuredGridVolumeZSweepMapper", m, grid, o, o.PeerViews));
+    }
+  }
+
+  double ours = 0;
+  for (const Row& r : rows)
+  {
+    if (r.Name.rfind("PPIRay", 0) == 0)
+    {
+      ours = r.Ms;
+    }
+  }
+  std::printf("\n| mapper | ms/frame (median) | frames | M tets/s | GPU B/tet | PPIRay speed-up |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|\n");
+  for (const Row& r : rows)
+  {
+    char gpu[32] = "n/a";
+    if (r.GPUBytes >= 0)
+    {
+      std::snprintf(gpu, sizeof(gpu), "%.1f", r.GPUBytes / tets);
+    }
+    char speedup[32] = "";
+    if (ours > 0)
+    {
+      std::snprintf(speedup, sizeof(speedup), "%.2fx", r.Ms / ours);
+    }
+    std::printf("| %s | %.1f | %d | %.2f | %s | %s |\n", r.Name.c_str(), r.Ms, r.Frames,
+      tets / r.Ms / 1000.0, gpu, speedup);
+  }
+  return 0;
+}
