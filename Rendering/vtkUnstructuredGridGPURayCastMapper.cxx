@@ -81,7 +81,8 @@ public:
   vtkNew<vtkTextureObject> Accumulated[2]; // ping-pong: colour so far
   vtkNew<vtkTextureObject> Exit[2];        // ping-pong: where the last march stopped
   vtkNew<vtkTextureObject> LayerDepth[2];
-  vtkNew<vtkTextureObject> OpaqueDepth;
+  vtkNew<vtkTextureObject> OpaqueDepth; // same format as VTK's depth buffer
+  int OpaqueDepthFormat = -2;
   int TargetSize[2] = { 0, 0 };
   unsigned int Query = 0;
 
@@ -120,6 +121,7 @@ public:
     this->LayerDepth[0]->ReleaseGraphicsResources(window);
     this->LayerDepth[1]->ReleaseGraphicsResources(window);
     this->OpaqueDepth->ReleaseGraphicsResources(window);
+    this->OpaqueDepthFormat = -2;
     this->TargetSize[0] = this->TargetSize[1] = 0;
     if (this->Query)
     {
@@ -421,8 +423,7 @@ bool vtkUnstructuredGridGPURayCastMapper::PrepareTargets(
       AllocateTarget(in.Exit[0], context, width, height, 1) &&
       AllocateTarget(in.Exit[1], context, width, height, 1) &&
       AllocateDepthTarget(in.LayerDepth[0], context, width, height) &&
-      AllocateDepthTarget(in.LayerDepth[1], context, width, height) &&
-      AllocateDepthTarget(in.OpaqueDepth, context, width, height);
+      AllocateDepthTarget(in.LayerDepth[1], context, width, height);
     if (!ok)
     {
       vtkErrorMacro("Could not allocate " << width << "x" << height << " render targets.");
@@ -479,6 +480,75 @@ bool vtkUnstructuredGridGPURayCastMapper::PrepareTargets(
     return false;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkUnstructuredGridGPURayCastMapper::CopyOpaqueDepth(
+  vtkOpenGLRenderWindow* context, int source, int x0, int y0, int width, int height)
+{
+  // Blit VTK's depth (resolving multisampling) into a texture of the very same
+  // format, as glBlitFramebuffer requires for depth.
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLState* state = context->GetState();
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, source);
+  const GLenum attachment = source ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
+  GLint bits = 0, type = 0, stencil = 0;
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencil);
+  int format = stencil > 0 ? -1
+    : type == GL_FLOAT     ? vtkTextureObject::Float32
+    : bits >= 32           ? vtkTextureObject::Fixed32
+    : bits >= 24           ? vtkTextureObject::Fixed24
+                           : vtkTextureObject::Fixed16;
+  if (bits == 0)
+  {
+    format = vtkTextureObject::Float32; // no depth buffer: nothing is opaque
+  }
+  if (in.OpaqueDepthFormat != format || in.OpaqueDepth->GetWidth() != static_cast<unsigned>(width) ||
+    in.OpaqueDepth->GetHeight() != static_cast<unsigned>(height))
+  {
+    in.OpaqueDepth->SetContext(context);
+    in.OpaqueDepth->SetMinificationFilter(vtkTextureObject::Nearest);
+    in.OpaqueDepth->SetMagnificationFilter(vtkTextureObject::Nearest);
+    if (format < 0)
+    {
+      in.OpaqueDepth->AllocateDepthStencil(width, height);
+    }
+    else
+    {
+      in.OpaqueDepth->AllocateDepth(width, height, format);
+    }
+    in.OpaqueDepthFormat = format;
+  }
+  vtkOpenGLFramebufferObject* fbo = in.Framebuffer;
+  fbo->Bind(GL_DRAW_FRAMEBUFFER);
+  fbo->AddDepthAttachment(in.OpaqueDepth);
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  bool copied = false;
+  if (bits > 0)
+  {
+    glBlitFramebuffer(x0, y0, x0 + width, y0 + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT,
+      GL_NEAREST);
+    copied = glGetError() == GL_NO_ERROR;
+  }
+  if (!copied)
+  {
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    if (bits > 0)
+    {
+      vtkWarningMacro("Could not read the depth buffer (" << bits << " bits): opaque geometry "
+                                                           "does not stop the rays.");
+    }
+  }
+  fbo->RemoveDepthAttachment();
 }
 
 //------------------------------------------------------------------------------
@@ -573,28 +643,12 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
 
   // Opaque depth: VTK's depth buffer under this renderer's viewport.
   state->PushFramebufferBindings();
-  int drawFramebuffer = 0, samples = 0;
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
-  glGetIntegerv(GL_SAMPLES, &samples);
-  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawFramebuffer);
-  bool haveOpaqueDepth = samples == 0;
-  if (haveOpaqueDepth)
-  {
-    in.OpaqueDepth->CopyFromFrameBuffer(x0, y0, 0, 0, width, height);
-  }
-
+  int sourceFramebuffer = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &sourceFramebuffer);
   vtkOpenGLFramebufferObject* fbo = in.Framebuffer;
+  this->CopyOpaqueDepth(context, sourceFramebuffer, x0, y0, width, height);
   fbo->Bind();
   state->vtkglViewport(0, 0, width, height);
-  if (!haveOpaqueDepth)
-  {
-    // Multisampled framebuffers cannot be copied from: no opaque geometry.
-    fbo->AddDepthAttachment(in.OpaqueDepth);
-    state->vtkglDepthMask(GL_TRUE);
-    state->vtkglClearDepth(1.0);
-    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-    vtkWarningMacro("Multisampled framebuffer: opaque geometry does not stop the rays.");
-  }
   // Nothing accumulated yet; no march has stopped anywhere.
   int current = 0;
   fbo->AddColorAttachment(0, in.Accumulated[current]);

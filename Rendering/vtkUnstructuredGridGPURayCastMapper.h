@@ -131,6 +131,8 @@ protected:
   bool UpdateTransferFunction(vtkVolumeProperty* property);
   bool UploadToGPU(vtkOpenGLRenderWindow* context);
   bool PrepareTargets(vtkOpenGLRenderWindow* context, int width, int height);
+  void CopyOpaqueDepth(
+    vtkOpenGLRenderWindow* context, int source, int x0, int y0, int width, int height);
   void RenderPasses(vtkRenderer* ren, vtkVolume* vol, vtkOpenGLRenderWindow* context);
 
 private:
