@@ -9,10 +9,7 @@ import os
 import re
 import subprocess
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from loglog import save_loglog
 
 build = os.environ.get("PPIRAY_BUILD_DIR", "build")
 bench = os.path.join(build, "bin", "ppirayBenchmark")
@@ -35,15 +32,8 @@ for i, e in enumerate(extents):
     print("| %d | %s | %.2fx |" % (rows[names[0]][i][0], " | ".join("%.1f ms" % t for t in times),
                                     times[1] / times[0]))
 
-plt.figure(figsize=(5.5, 4))
-for name, points in rows.items():
-    plt.loglog([p[0] for p in points], [p[1] for p in points], "o-", label=name)
-plt.xlabel("tetrahedra")
-plt.ylabel("ms per frame (512x512, llvmpipe)")
-plt.title("Frame time vs mesh size")
-plt.legend(fontsize=8)
-plt.grid(True, which="both", alpha=0.3)
-plt.tight_layout()
-out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "benchmark_scaling.png")
-plt.savefig(out, dpi=120)
+out = save_loglog(
+    "benchmark_scaling",
+    [([p[0] for p in points], [p[1] for p in points], "o-", name) for name, points in rows.items()],
+    "tetrahedra", "ms per frame (512x512, llvmpipe)", "Frame time vs mesh size")
 print("wrote", out)

@@ -4,15 +4,10 @@ gamma = tau D / (tau D + 1) index and for PPIRay's u = 1 - sqrt(1 - gamma).
 Writes Documentation/plots/psi_table_error.png and prints the table.
 Run: Module/run python Documentation/plots/psi_table_error.py
 """
-import os
+import numpy as np
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-import ppiray  # noqa: E402
+import ppiray
+from loglog import save_loglog
 
 psi_of_gamma = np.vectorize(ppiray.vtkPsiTable.PsiOfGamma)
 
@@ -42,16 +37,10 @@ print("|---:|---:|---:|")
 for n, a, b in zip(sizes, gamma_index, u_index):
     print("| %d | %.2e | %.2e |" % (n, a, b))
 
-plt.figure(figsize=(5.5, 4))
-plt.loglog(sizes, gamma_index, "o-", label=r"index $\gamma = \tau D/(\tau D+1)$ (Moreland & Angel)")
-plt.loglog(sizes, u_index, "s-", label=r"index $u = 1-\sqrt{1-\gamma}$ (PPIRay)")
-plt.axhline(0.5 / 255, color="gray", ls=":", label="0.5/255")
-plt.xlabel("table size N (N x N texels)")
-plt.ylabel(r"max bilinear error in $\Psi$")
-plt.title(r"$\Psi$ table lookup error")
-plt.legend(fontsize=8)
-plt.grid(True, which="both", alpha=0.3)
-plt.tight_layout()
-out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "psi_table_error.png")
-plt.savefig(out, dpi=120)
+out = save_loglog(
+    "psi_table_error",
+    [(sizes, gamma_index, "o-", r"index $\gamma = \tau D/(\tau D+1)$ (Moreland & Angel)"),
+     (sizes, u_index, "s-", r"index $u = 1-\sqrt{1-\gamma}$ (PPIRay)")],
+    "table size N (N x N texels)", r"max bilinear error in $\Psi$", r"$\Psi$ table lookup error",
+    hline=(0.5 / 255, "0.5/255"))
 print("wrote", out)
