@@ -1,0 +1,555 @@
+#include "vtkUnstructuredGridReferenceRenderer.h"
+
+#include "vtkCamera.h"
+#include "vtkCellData.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridCellAdjacency.h"
+#include "vtkVolumeIntegrals.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+vtkStandardNewMacro(vtkUnstructuredGridReferenceRenderer);
+vtkCxxSetObjectMacro(vtkUnstructuredGridReferenceRenderer, VolumeProperty, vtkVolumeProperty);
+vtkCxxSetObjectMacro(vtkUnstructuredGridReferenceRenderer, Camera, vtkCamera);
+
+namespace
+{
+using Vec3 = std::array<double, 3>;
+
+// The transfer function as VTK evaluates it, with the scalar values where it
+// may bend: every colour and opacity node, plus uniform subdivisions of
+// curved (midpoint / sharpness) segments.
+struct TransferFunction
+{
+  vtkColorTransferFunction* Color = nullptr;
+  vtkPiecewiseFunction* Gray = nullptr;
+  vtkPiecewiseFunction* Opacity = nullptr;
+  double UnitDistance = 1.0;
+  std::vector<double> Breaks;
+
+  bool Build(vtkVolumeProperty* property, int subdivisions)
+  {
+    this->Opacity = property->GetScalarOpacity(0);
+    if (property->GetColorChannels(0) == 3)
+    {
+      this->Color = property->GetRGBTransferFunction(0);
+    }
+    else
+    {
+      this->Gray = property->GetGrayTransferFunction(0);
+    }
+    this->UnitDistance = property->GetScalarOpacityUnitDistance(0);
+    if (!(this->UnitDistance > 0))
+    {
+      this->UnitDistance = 1.0;
+    }
+    // (x, midpoint, sharpness) of the nodes of one function.
+    auto collect = [&](int size, auto node) {
+      for (int i = 0; i < size; ++i)
+      {
+        double x, midpoint, sharpness, next = 0;
+        node(i, x, midpoint, sharpness);
+        this->Breaks.push_back(x);
+        if (i + 1 < size)
+        {
+          double m2, s2;
+          node(i + 1, next, m2, s2);
+          if (midpoint != 0.5 || sharpness != 0.0)
+          {
+            for (int k = 1; k < subdivisions; ++k)
+            {
+              this->Breaks.push_back(x + (next - x) * k / subdivisions);
+            }
+          }
+        }
+      }
+    };
+    auto piecewise = [](vtkPiecewiseFunction* f) {
+      return [f](int i, double& x, double& m, double& s) {
+        double v[4];
+        f->GetNodeValue(i, v);
+        x = v[0];
+        m = v[2];
+        s = v[3];
+      };
+    };
+    collect(this->Opacity->GetSize(), piecewise(this->Opacity));
+    if (this->Color)
+    {
+      collect(this->Color->GetSize(), [this](int i, double& x, double& m, double& s) {
+        double v[6];
+        this->Color->GetNodeValue(i, v);
+        x = v[0];
+        m = v[4];
+        s = v[5];
+      });
+    }
+    else if (this->Gray)
+    {
+      collect(this->Gray->GetSize(), piecewise(this->Gray));
+    }
+    std::sort(this->Breaks.begin(), this->Breaks.end());
+    this->Breaks.erase(std::unique(this->Breaks.begin(), this->Breaks.end()), this->Breaks.end());
+    return true;
+  }
+
+  void Evaluate(double s, double rgb[3], double& tau) const
+  {
+    if (this->Color)
+    {
+      this->Color->GetColor(s, rgb);
+    }
+    else if (this->Gray)
+    {
+      rgb[0] = rgb[1] = rgb[2] = this->Gray->GetValue(s);
+    }
+    else
+    {
+      rgb[0] = rgb[1] = rgb[2] = 1.0;
+    }
+    tau = this->Opacity->GetValue(s) / this->UnitDistance;
+  }
+};
+
+struct Segment
+{
+  double T0, T1, S0, S1;
+};
+
+// Precomputed per tetrahedron (per tile): barycentric coordinates of x are
+// lambda_{1..3} = Inverse (x - P0), lambda_0 = 1 - sum.
+struct Tetrahedron
+{
+  Vec3 P0;
+  double Inverse[3][3];
+  double S[4];
+};
+
+bool InvertEdges(const double p[4][3], double inverse[3][3])
+{
+  const double e[3][3] = { { p[1][0] - p[0][0], p[2][0] - p[0][0], p[3][0] - p[0][0] },
+    { p[1][1] - p[0][1], p[2][1] - p[0][1], p[3][1] - p[0][1] },
+    { p[1][2] - p[0][2], p[2][2] - p[0][2], p[3][2] - p[0][2] } };
+  const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+    e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+    e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+  double scale = 0;
+  for (const auto& row : e)
+  {
+    for (double v : row)
+    {
+      scale = std::max(scale, std::abs(v));
+    }
+  }
+  if (!(std::abs(det) > 1e-14 * scale * scale * scale))
+  {
+    return false; // flat: contributes nothing
+  }
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+      inverse[r][c] = (e[r1][c1] * e[r2][c2] - e[r1][c2] * e[r2][c1]) / det;
+    }
+  }
+  return true;
+}
+
+// The piece of the ray origin + t direction (t >= 0) inside the tetrahedron.
+bool ClipRay(const Tetrahedron& tet, const Vec3& origin, const Vec3& direction, Segment& out)
+{
+  double a[4], b[4];
+  const Vec3 q = { origin[0] - tet.P0[0], origin[1] - tet.P0[1], origin[2] - tet.P0[2] };
+  a[0] = 1.0;
+  b[0] = 0.0;
+  for (int r = 0; r < 3; ++r)
+  {
+    a[r + 1] = tet.Inverse[r][0] * q[0] + tet.Inverse[r][1] * q[1] + tet.Inverse[r][2] * q[2];
+    b[r + 1] = tet.Inverse[r][0] * direction[0] + tet.Inverse[r][1] * direction[1] +
+      tet.Inverse[r][2] * direction[2];
+    a[0] -= a[r + 1];
+    b[0] -= b[r + 1];
+  }
+  // lambda_v(t) = a_v + b_v t >= 0 for all v; a ray lying in a face (b ~ 0,
+  // a ~ 0) counts as inside, and the overlap is removed per ray.
+  const double eps = 1e-9;
+  double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
+  for (int v = 0; v < 4; ++v)
+  {
+    if (b[v] > eps)
+    {
+      t0 = std::max(t0, -a[v] / b[v]);
+    }
+    else if (b[v] < -eps)
+    {
+      t1 = std::min(t1, -a[v] / b[v]);
+    }
+    else if (a[v] < -eps)
+    {
+      return false;
+    }
+  }
+  if (!(t1 > t0))
+  {
+    return false;
+  }
+  auto scalar = [&](double t) {
+    double s = 0;
+    for (int v = 0; v < 4; ++v)
+    {
+      s += (a[v] + b[v] * t) * tet.S[v];
+    }
+    return s;
+  };
+  out = { t0, t1, scalar(t0), scalar(t1) };
+  return true;
+}
+
+// Front-to-back composite of the sorted, de-overlapped segments, each split
+// at every transfer-function break and integrated in closed form.
+void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf, float rgba[4])
+{
+  std::sort(segments.begin(), segments.end(),
+    [](const Segment& x, const Segment& y) { return x.T0 < y.T0; });
+  double color[3] = { 0, 0, 0 };
+  double transmittance = 1.0;
+  double reached = -std::numeric_limits<double>::infinity();
+  std::vector<double> cuts;
+  for (Segment seg : segments)
+  {
+    if (seg.T1 <= reached)
+    {
+      continue;
+    }
+    if (seg.T0 < reached)
+    {
+      seg.S0 += (seg.S1 - seg.S0) * (reached - seg.T0) / (seg.T1 - seg.T0);
+      seg.T0 = reached;
+    }
+    reached = seg.T1;
+    cuts.assign({ 0.0, 1.0 });
+    const double lo = std::min(seg.S0, seg.S1), hi = std::max(seg.S0, seg.S1);
+    auto first = std::upper_bound(tf.Breaks.begin(), tf.Breaks.end(), lo);
+    for (auto it = first; it != tf.Breaks.end() && *it < hi; ++it)
+    {
+      cuts.push_back((*it - seg.S0) / (seg.S1 - seg.S0));
+    }
+    std::sort(cuts.begin(), cuts.end());
+    for (size_t k = 0; k + 1 < cuts.size(); ++k)
+    {
+      const double u0 = cuts[k], u1 = cuts[k + 1];
+      const double length = (u1 - u0) * (seg.T1 - seg.T0);
+      if (!(length > 0))
+      {
+        continue;
+      }
+      // Evaluate just inside the piece: at a clamping-off step the function
+      // jumps exactly at a break.
+      const double sa = seg.S0 + (seg.S1 - seg.S0) * (u0 + 1e-12 * (u1 - u0));
+      const double sb = seg.S0 + (seg.S1 - seg.S0) * (u1 - 1e-12 * (u1 - u0));
+      double ca[3], cb[3], taua, taub, emitted[3], transparency;
+      tf.Evaluate(sa, ca, taua);
+      tf.Evaluate(sb, cb, taub);
+      ppiray::IntegrateLinearPiece(ca, taua, cb, taub, length, emitted, transparency);
+      for (int c = 0; c < 3; ++c)
+      {
+        color[c] += transmittance * emitted[c];
+      }
+      transmittance *= transparency;
+    }
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    rgba[c] = static_cast<float>(color[c]);
+  }
+  rgba[3] = static_cast<float>(1.0 - transmittance);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkUnstructuredGridReferenceRenderer::vtkUnstructuredGridReferenceRenderer()
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS, vtkDataSetAttributes::SCALARS);
+}
+
+//------------------------------------------------------------------------------
+vtkUnstructuredGridReferenceRenderer::~vtkUnstructuredGridReferenceRenderer()
+{
+  this->SetVolumeProperty(nullptr);
+  this->SetCamera(nullptr);
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkUnstructuredGridReferenceRenderer::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  if (this->VolumeProperty)
+  {
+    time = std::max(time, this->VolumeProperty->GetMTime());
+  }
+  if (this->Camera)
+  {
+    time = std::max(time, this->Camera->GetMTime());
+  }
+  return time;
+}
+
+//------------------------------------------------------------------------------
+int vtkUnstructuredGridReferenceRenderer::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkUnstructuredGridReferenceRenderer::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const int extent[6] = { 0, this->ImageSize[0] - 1, 0, this->ImageSize[1] - 1, 0, 0 };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_FLOAT, 4);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkUnstructuredGridReferenceRenderer::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0]);
+  vtkImageData* output = vtkImageData::GetData(outputVector);
+  const int width = this->ImageSize[0], height = this->ImageSize[1];
+  output->SetExtent(0, width - 1, 0, height - 1, 0, 0);
+  vtkNew<vtkFloatArray> rgba;
+  rgba->SetName("RGBA");
+  rgba->SetNumberOfComponents(4);
+  rgba->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+  rgba->Fill(0.0);
+  output->GetPointData()->SetScalars(rgba);
+  if (!this->VolumeProperty || !this->Camera || !this->VolumeProperty->GetScalarOpacity(0))
+  {
+    vtkErrorMacro("A volume property with a scalar opacity function and a camera are required.");
+    return 1;
+  }
+  if (!input || input->GetNumberOfCells() == 0)
+  {
+    return 1;
+  }
+  int association = 0;
+  vtkDataArray* scalars = this->GetInputArrayToProcess(0, input, association);
+  if (!scalars)
+  {
+    vtkErrorMacro("No scalars to render.");
+    return 1;
+  }
+  const bool cellScalars = association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+
+  std::vector<vtkIdType> tets, cellIds, unsupported;
+  vtkUnstructuredGridCellAdjacency::ExtractTetrahedra(input, tets, cellIds, unsupported);
+  if (!unsupported.empty())
+  {
+    vtkWarningMacro("Only tetrahedra are rendered; other cells skipped.");
+  }
+  const vtkIdType numberOfTets = static_cast<vtkIdType>(cellIds.size());
+
+  TransferFunction tf;
+  tf.Build(this->VolumeProperty, this->CurvedSegmentSubdivisions);
+
+  // Camera: clip <-> world, with world shifted to the centre of the bounds.
+  double bounds[6];
+  input->GetBounds(bounds);
+  const Vec3 centre = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+  vtkNew<vtkMatrix4x4> worldToClip, clipToWorld;
+  worldToClip->DeepCopy(this->Camera->GetCompositeProjectionTransformMatrix(
+    static_cast<double>(width) / height, -1, 1));
+  vtkMatrix4x4::Invert(worldToClip, clipToWorld);
+
+  // Project the points: pixel coordinates (pixel i's centre at i), or flag
+  // those at or behind the eye plane.
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  std::vector<double> pixel(2 * numberOfPoints);
+  std::vector<unsigned char> behind(numberOfPoints, 0);
+  for (vtkIdType p = 0; p < numberOfPoints; ++p)
+  {
+    double x[4] = { 0, 0, 0, 1 };
+    input->GetPoint(p, x);
+    double clip[4];
+    worldToClip->MultiplyPoint(x, clip);
+    if (!(clip[3] > 1e-12))
+    {
+      behind[p] = 1;
+      continue;
+    }
+    pixel[2 * p] = (clip[0] / clip[3] + 1.0) * 0.5 * width - 0.5;
+    pixel[2 * p + 1] = (clip[1] / clip[3] + 1.0) * 0.5 * height - 0.5;
+  }
+
+  // Bin tetrahedra into 16 x 16 pixel tiles by their projected bounding box.
+  constexpr int TileSize = 16;
+  const int tilesX = (width + TileSize - 1) / TileSize, tilesY = (height + TileSize - 1) / TileSize;
+  auto tileRange = [&](vtkIdType t, int range[4]) {
+    double lo[2] = { 1e300, 1e300 }, hi[2] = { -1e300, -1e300 };
+    for (int v = 0; v < 4; ++v)
+    {
+      const vtkIdType p = tets[4 * t + v];
+      if (behind[p])
+      {
+        range[0] = range[2] = 0;
+        range[1] = tilesX - 1;
+        range[3] = tilesY - 1;
+        return;
+      }
+      for (int i = 0; i < 2; ++i)
+      {
+        lo[i] = std::min(lo[i], pixel[2 * p + i]);
+        hi[i] = std::max(hi[i], pixel[2 * p + i]);
+      }
+    }
+    const int limits[2] = { width - 1, height - 1 };
+    for (int i = 0; i < 2; ++i)
+    {
+      const int a = static_cast<int>(std::floor(std::max(lo[i] - 1.0, -1.0)));
+      const int b = static_cast<int>(std::ceil(std::min(hi[i] + 1.0, limits[i] + 1.0)));
+      range[2 * i] = std::max(0, a) / TileSize;
+      range[2 * i + 1] = std::min(limits[i], std::max(b, 0)) / TileSize;
+      if (b < 0 || a > limits[i])
+      {
+        range[2 * i + 1] = range[2 * i] - 1; // off screen
+      }
+    }
+  };
+  std::vector<vtkIdType> tileOffsets(static_cast<size_t>(tilesX) * tilesY + 1, 0);
+  for (vtkIdType t = 0; t < numberOfTets; ++t)
+  {
+    int r[4];
+    tileRange(t, r);
+    for (int ty = r[2]; ty <= r[3]; ++ty)
+    {
+      for (int tx = r[0]; tx <= r[1]; ++tx)
+      {
+        ++tileOffsets[static_cast<size_t>(ty) * tilesX + tx + 1];
+      }
+    }
+  }
+  for (size_t i = 1; i < tileOffsets.size(); ++i)
+  {
+    tileOffsets[i] += tileOffsets[i - 1];
+  }
+  std::vector<vtkIdType> tileTets(tileOffsets.back());
+  {
+    std::vector<vtkIdType> fill(tileOffsets.begin(), tileOffsets.end() - 1);
+    for (vtkIdType t = 0; t < numberOfTets; ++t)
+    {
+      int r[4];
+      tileRange(t, r);
+      for (int ty = r[2]; ty <= r[3]; ++ty)
+      {
+        for (int tx = r[0]; tx <= r[1]; ++tx)
+        {
+          tileTets[fill[static_cast<size_t>(ty) * tilesX + tx]++] = t;
+        }
+      }
+    }
+  }
+
+  float* out = rgba->GetPointer(0);
+  const int numberOfTiles = tilesX * tilesY;
+#pragma omp parallel for schedule(dynamic)
+  for (int tile = 0; tile < numberOfTiles; ++tile)
+  {
+    const int tx = tile % tilesX, ty = tile / tilesX;
+    std::vector<Tetrahedron> local;
+    for (vtkIdType k = tileOffsets[tile]; k < tileOffsets[tile + 1]; ++k)
+    {
+      const vtkIdType t = tileTets[k];
+      double p[4][3];
+      Tetrahedron tet;
+      for (int v = 0; v < 4; ++v)
+      {
+        const vtkIdType id = tets[4 * t + v];
+        input->GetPoints()->GetPoint(id, p[v]);
+        for (int i = 0; i < 3; ++i)
+        {
+          p[v][i] -= centre[i];
+        }
+        tet.S[v] = cellScalars ? scalars->GetComponent(cellIds[t], 0)
+                               : scalars->GetComponent(id, 0);
+      }
+      if (std::isnan(tet.S[0] + tet.S[1] + tet.S[2] + tet.S[3]) || !InvertEdges(p, tet.Inverse))
+      {
+        continue;
+      }
+      tet.P0 = { p[0][0], p[0][1], p[0][2] };
+      local.push_back(tet);
+    }
+    std::vector<Segment> segments;
+    for (int py = ty * TileSize; py < std::min(height, (ty + 1) * TileSize); ++py)
+    {
+      for (int px = tx * TileSize; px < std::min(width, (tx + 1) * TileSize); ++px)
+      {
+        double ndcNear[4] = { 2.0 * (px + 0.5) / width - 1.0, 2.0 * (py + 0.5) / height - 1.0,
+          -1.0, 1.0 };
+        double ndcFar[4] = { ndcNear[0], ndcNear[1], 1.0, 1.0 };
+        double nearPoint[4], farPoint[4];
+        clipToWorld->MultiplyPoint(ndcNear, nearPoint);
+        clipToWorld->MultiplyPoint(ndcFar, farPoint);
+        Vec3 origin, direction;
+        double length = 0;
+        for (int i = 0; i < 3; ++i)
+        {
+          origin[i] = nearPoint[i] / nearPoint[3] - centre[i];
+          direction[i] = farPoint[i] / farPoint[3] - centre[i] - origin[i];
+          length += direction[i] * direction[i];
+        }
+        length = std::sqrt(length);
+        for (double& d : direction)
+        {
+          d /= length;
+        }
+        segments.clear();
+        for (const Tetrahedron& tet : local)
+        {
+          Segment seg;
+          if (ClipRay(tet, origin, direction, seg))
+          {
+            segments.push_back(seg);
+          }
+        }
+        IntegrateRay(segments, tf, out + 4 * (static_cast<size_t>(py) * width + px));
+      }
+    }
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkUnstructuredGridReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ImageSize: " << this->ImageSize[0] << " x " << this->ImageSize[1] << "\n";
+  os << indent << "CurvedSegmentSubdivisions: " << this->CurvedSegmentSubdivisions << "\n";
+  os << indent << "VolumeProperty: " << this->VolumeProperty << "\n";
+  os << indent << "Camera: " << this->Camera << "\n";
+}
