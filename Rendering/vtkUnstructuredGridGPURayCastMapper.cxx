@@ -30,13 +30,19 @@
 #include "composite_fs.h"
 #include "entry_fs.h"
 #include "entry_vs.h"
-#include "integrate_ppi_fs.h"
 #include "march_fs.h"
+#include "piece_exact_fs.h"
+#include "piece_ppi_fs.h"
 #include "ray_fs.h"
+#include "segment_average_fs.h"
+#include "segment_split_fs.h"
+#include "transfer_function_fs.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkUnstructuredGridGPURayCastMapper);
 
@@ -89,6 +95,7 @@ public:
   // Programs.
   vtkShaderProgram* EntryProgram = nullptr;
   std::unique_ptr<vtkOpenGLQuadHelper> MarchQuad;
+  int MarchQuadMode = -1; // integration mode the march program was built for
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
 
   size_t TargetBytes() const
@@ -168,6 +175,29 @@ std::string UnsupportedCellsMessage(const std::vector<vtkIdType>& unsupported)
   return message.str();
 }
 
+// The march shader of an integration mode: the traversal with the mode's
+// segment integral (and piece integral) substituted in.
+std::string MarchShader(int mode)
+{
+  std::string integrate;
+  switch (mode)
+  {
+    case vtkUnstructuredGridGPURayCastMapper::EXACT_LINEAR:
+      integrate = std::string(piece_exact_fs) + segment_split_fs;
+      break;
+    case vtkUnstructuredGridGPURayCastMapper::AVERAGE_COLOR:
+      integrate = segment_average_fs;
+      break;
+    default:
+      integrate = std::string(piece_ppi_fs) + segment_split_fs;
+  }
+  std::string march = march_fs;
+  vtkShaderProgram::Substitute(march, "//PPIRay::TransferFunction::Impl", transfer_function_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::Integrate::Impl", integrate);
+  vtkShaderProgram::Substitute(march, "//PPIRay::Ray::Impl", ray_fs);
+  return march;
+}
+
 bool AllocateTarget(vtkTextureObject* texture, vtkOpenGLRenderWindow* context, int w, int h,
   int components)
 {
@@ -198,6 +228,36 @@ vtkUnstructuredGridGPURayCastMapper::vtkUnstructuredGridGPURayCastMapper()
 
 //------------------------------------------------------------------------------
 vtkUnstructuredGridGPURayCastMapper::~vtkUnstructuredGridGPURayCastMapper() = default;
+
+//------------------------------------------------------------------------------
+void vtkUnstructuredGridGPURayCastMapper::SetIntegrationMode(int mode)
+{
+  if (mode != PARTIAL_PRE_INTEGRATION && mode != EXACT_LINEAR && mode != AVERAGE_COLOR)
+  {
+    vtkErrorMacro("Unknown integration mode " << mode << "; keeping "
+                                              << this->GetIntegrationModeAsString() << ".");
+    return;
+  }
+  if (mode != this->IntegrationMode)
+  {
+    this->IntegrationMode = mode;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkUnstructuredGridGPURayCastMapper::GetIntegrationModeAsString()
+{
+  switch (this->IntegrationMode)
+  {
+    case EXACT_LINEAR:
+      return "EXACT_LINEAR";
+    case AVERAGE_COLOR:
+      return "AVERAGE_COLOR";
+    default:
+      return "PARTIAL_PRE_INTEGRATION";
+  }
+}
 
 //------------------------------------------------------------------------------
 vtkIdType vtkUnstructuredGridGPURayCastMapper::GetNumberOfTetrahedra()
@@ -395,7 +455,13 @@ bool vtkUnstructuredGridGPURayCastMapper::UploadToGPU(vtkOpenGLRenderWindow* con
     in.TransferFunctionOnGPU = true;
     ++this->TransferFunctionUploadCount;
   }
-  if (in.PsiTextureSize != this->PsiTableSize)
+  const bool needsPsi = this->IntegrationMode == PARTIAL_PRE_INTEGRATION;
+  if (!needsPsi && in.PsiTextureSize)
+  {
+    in.PsiTexture->ReleaseGraphicsResources(context);
+    in.PsiTextureSize = 0;
+  }
+  if (needsPsi && in.PsiTextureSize != this->PsiTableSize)
   {
     const std::vector<float>& table = vtkPsiTable::GetTable(this->PsiTableSize);
     in.PsiTexture->SetContext(context);
@@ -459,12 +525,15 @@ bool vtkUnstructuredGridGPURayCastMapper::PrepareTargets(
   {
     cache->ReadyShaderProgram(in.EntryProgram);
   }
-  if (!in.MarchQuad)
+  if (!in.MarchQuad || in.MarchQuadMode != this->IntegrationMode)
   {
-    std::string march = march_fs;
-    vtkShaderProgram::Substitute(march, "//PPIRay::Integrate::Impl", integrate_ppi_fs);
-    vtkShaderProgram::Substitute(march, "//PPIRay::Ray::Impl", ray_fs);
-    in.MarchQuad.reset(new vtkOpenGLQuadHelper(context, nullptr, march.c_str(), ""));
+    if (in.MarchQuad)
+    {
+      in.MarchQuad->ReleaseGraphicsResources(context);
+    }
+    in.MarchQuad.reset(
+      new vtkOpenGLQuadHelper(context, nullptr, MarchShader(this->IntegrationMode).c_str(), ""));
+    in.MarchQuadMode = this->IntegrationMode;
   }
   else
   {
@@ -726,13 +795,18 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
     state->vtkglDisable(GL_CULL_FACE);
 
     context->GetShaderCache()->ReadyShaderProgram(march);
-    vtkTextureObject* textures[] = { in.Planes.GetTexture(), in.Neighbors.GetTexture(),
-      in.Field.GetTexture(), in.BoundaryFaces.GetTexture(), in.ControlPointTexels.GetTexture(),
-      in.EntryTexture, in.OpaqueDepth, in.PsiTexture, in.Accumulated[current],
-      in.Exit[current] };
-    const char* names[] = { "facePlanes", "neighbors", "field", "boundaryFaces", "controlPoints",
-      "entryTriangle", "opaqueDepth", "psiTable", "previousAccumulated", "previousExit" };
-    for (int i = 0; i < 10; ++i)
+    std::vector<vtkTextureObject*> textures = { in.Planes.GetTexture(),
+      in.Neighbors.GetTexture(), in.Field.GetTexture(), in.BoundaryFaces.GetTexture(),
+      in.ControlPointTexels.GetTexture(), in.EntryTexture, in.OpaqueDepth,
+      in.Accumulated[current], in.Exit[current] };
+    std::vector<const char*> names = { "facePlanes", "neighbors", "field", "boundaryFaces",
+      "controlPoints", "entryTriangle", "opaqueDepth", "previousAccumulated", "previousExit" };
+    if (in.PsiTextureSize)
+    {
+      textures.push_back(in.PsiTexture);
+      names.push_back("psiTable");
+    }
+    for (size_t i = 0; i < textures.size(); ++i)
     {
       textures[i]->Activate();
       march->SetUniformi(names[i], textures[i]->GetTextureUnit());
@@ -782,6 +856,7 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
 void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "IntegrationMode: " << this->GetIntegrationModeAsString() << "\n";
   os << indent << "MaximumNumberOfPeels: " << this->MaximumNumberOfPeels << "\n";
   os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
   os << indent << "PsiTableSize: " << this->PsiTableSize << "\n";

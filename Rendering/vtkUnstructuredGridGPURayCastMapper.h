@@ -22,7 +22,8 @@
  * property changes; the Psi table once.
  *
  * Supported today: tetrahedra (other cells are reported and skipped),
- * composite blending, perspective and parallel cameras.
+ * composite blending, perspective and parallel cameras, the integration
+ * modes of SetIntegrationMode().
  */
 #ifndef vtkUnstructuredGridGPURayCastMapper_h
 #define vtkUnstructuredGridGPURayCastMapper_h
@@ -46,6 +47,38 @@ public:
   static vtkUnstructuredGridGPURayCastMapper* New();
   vtkTypeMacro(vtkUnstructuredGridGPURayCastMapper, vtkUnstructuredGridVolumeMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * How each ray segment is integrated; all modes share the traversal.
+   * - PARTIAL_PRE_INTEGRATION (default): stops at every transfer-function
+   *   control point, each piece by Moreland and Angel's Psi table.
+   * - EXACT_LINEAR: the same stops, Psi in closed form in the shader (no table).
+   * - AVERAGE_COLOR: the whole cell segment with the mean of its end colours
+   *   and linear attenuation (Shirley-Tuchman; what projected tetrahedra do),
+   *   no stops: cheap, misses transfer-function features inside a cell.
+   * See Documentation/algorithms.md for the formulas and their sources.
+   */
+  enum IntegrationModes
+  {
+    PARTIAL_PRE_INTEGRATION = 0,
+    EXACT_LINEAR = 1,
+    AVERAGE_COLOR = 3
+  };
+
+  ///@{
+  /**
+   * The integration mode (IntegrationModes), default PARTIAL_PRE_INTEGRATION.
+   */
+  virtual void SetIntegrationMode(int mode);
+  vtkGetMacro(IntegrationMode, int);
+  void SetIntegrationModeToPartialPreIntegration()
+  {
+    this->SetIntegrationMode(PARTIAL_PRE_INTEGRATION);
+  }
+  void SetIntegrationModeToExactLinear() { this->SetIntegrationMode(EXACT_LINEAR); }
+  void SetIntegrationModeToAverageColor() { this->SetIntegrationMode(AVERAGE_COLOR); }
+  const char* GetIntegrationModeAsString();
+  ///@}
 
   ///@{
   /**
@@ -116,6 +149,7 @@ protected:
   vtkUnstructuredGridGPURayCastMapper();
   ~vtkUnstructuredGridGPURayCastMapper() override;
 
+  int IntegrationMode = PARTIAL_PRE_INTEGRATION;
   int MaximumNumberOfPeels = 64;
   int MaximumNumberOfSteps = 0;
   int PsiTableSize = 512;

@@ -8,16 +8,13 @@
 //   field[t]            = (g, s0): s(x) = g . x + s0 (s0 = -3e38: render empty)
 // The exit face is the nearest face plane the ray is heading out of
 // (Weiler et al. 2003, Sec. 3.2): t_f = (d_f - n_f . o) / (n_f . r), n_f . r > 0.
-// Every segment is integrated by integrateSegment(), split at each transfer
-// function control point it crosses; each piece by integratePiece(), the
-// integration mode, substituted below.
+// Every segment is integrated by integrateSegment(), the integration mode,
+// substituted below with the transfer function lookup.
 
 uniform samplerBuffer facePlanes;
 uniform isamplerBuffer neighbors;
 uniform samplerBuffer field;
 uniform isamplerBuffer boundaryFaces; // boundary triangle -> 4 t + f
-uniform samplerBuffer controlPoints;  // 2 texels per point: (s, tau), (r, g, b)
-uniform int numberOfControlPoints;
 uniform sampler2D entryTriangle;      // boundary triangle id + 1 per pixel
 uniform sampler2D opaqueDepth;
 uniform sampler2D previousAccumulated; // colour of the earlier peels
@@ -35,100 +32,11 @@ out vec4 fragOutput1;
 
 const float INFINITY = 3.0e38;
 
-// Transfer function: piecewise linear between control points, constant outside.
-float controlPointValue(int i)
-{
-  return texelFetch(controlPoints, 2 * i).x;
-}
-
-// (r, g, b, tau) of the transfer function at scalar s, with s in the control
-// interval [s_k, s_k+1] (k = -1 or n - 1: clamped to the end points).
-vec4 transferFunction(float s, int k)
-{
-  int n = numberOfControlPoints;
-  int lo = clamp(k, 0, n - 1);
-  int hi = clamp(k + 1, 0, n - 1);
-  vec4 a = texelFetch(controlPoints, 2 * lo);
-  vec4 b = texelFetch(controlPoints, 2 * hi);
-  vec4 ca = vec4(texelFetch(controlPoints, 2 * lo + 1).rgb, a.y);
-  vec4 cb = vec4(texelFetch(controlPoints, 2 * hi + 1).rgb, b.y);
-  float w = (hi == lo || b.x <= a.x) ? 0.0 : clamp((s - a.x) / (b.x - a.x), 0.0, 1.0);
-  return mix(ca, cb, w);
-}
-
-// Index k with s_k <= s < s_k+1 (-1 below the first point), moved from the
-// previous cell's index: the scalar is continuous along a ray for point data,
-// so this is usually zero or one step. Bounded by the number of points.
-int controlInterval(float s, int k)
-{
-  int n = numberOfControlPoints;
-  k = clamp(k, -1, n - 1);
-  for (int i = 0; i < n && k + 1 < n && controlPointValue(k + 1) <= s; ++i)
-  {
-    ++k;
-  }
-  for (int i = 0; i < n && k >= 0 && controlPointValue(k) > s; ++i)
-  {
-    --k;
-  }
-  return k;
-}
-
-void compositeFrontToBack(inout vec4 color, vec3 emitted, float alpha)
-{
-  color.rgb += (1.0 - color.a) * emitted;
-  color.a += (1.0 - color.a) * alpha;
-}
+//PPIRay::TransferFunction::Impl
 
 //PPIRay::Integrate::Impl
 
 //PPIRay::Ray::Impl
-
-// A segment of length `len` on which s goes linearly from sFront to sBack:
-// split at every control point value strictly between them, each piece
-// integrated by integratePiece(). Walks the control points in the direction
-// s moves (index arithmetic, no re-lookup: a value landing exactly on a
-// control point cannot loop, the role of next_s_iso in Espinha & Celes,
-// Sec. 3.2). Returns the control interval at sBack.
-int integrateSegment(float sFront, float sBack, float len, int k, inout vec4 color)
-{
-  int n = numberOfControlPoints;
-  k = controlInterval(sFront, k);
-  float ds = sBack - sFront;
-  float sA = sFront;
-  vec4 tfA = transferFunction(sA, k);
-  for (int i = 0; i <= n; ++i)
-  {
-    float sB;
-    int nextK;
-    if (ds > 0.0 && k + 1 < n && controlPointValue(k + 1) < sBack)
-    {
-      sB = controlPointValue(k + 1);
-      nextK = k + 1;
-    }
-    else if (ds < 0.0 && k >= 0 && controlPointValue(k) > sBack)
-    {
-      sB = controlPointValue(k);
-      nextK = k - 1;
-    }
-    else
-    {
-      sB = sBack;
-      nextK = k;
-    }
-    vec4 tfB = transferFunction(sB, k);
-    float pieceLength = ds == 0.0 ? len : len * (sB - sA) / ds;
-    integratePiece(tfA, tfB, pieceLength, color);
-    if (nextK == k)
-    {
-      break;
-    }
-    k = nextK;
-    sA = sB;
-    tfA = transferFunction(sA, k);
-  }
-  return k;
-}
 
 // Plane of face f of cell t.
 vec4 facePlane(int t, int f)

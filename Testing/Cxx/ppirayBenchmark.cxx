@@ -5,7 +5,8 @@
 // per second, GPU bytes per tetrahedron, and the speed-up of PPIRay.
 //
 //   ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]
-//                   [--views N] [--peer-views N] [--mappers ppiray,pt,raycast,zsweep]
+//                   [--views N] [--peer-views N]
+//                   [--mappers ppiray,ppiray-exact,ppiray-average,pt,raycast,zsweep]
 //
 // Default scene: vtkRTAnalyticSource over [-32, 32]^3 split into 1.31 M
 // tetrahedra (vtkDataSetTriangleFilter), 512x512, 8 views.
@@ -174,7 +175,8 @@ int main(int argc, char* argv[])
     else
     {
       std::cout << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]"
-                   " [--views N] [--peer-views N] [--mappers ppiray,pt,raycast,zsweep]\n";
+                   " [--views N] [--peer-views N]"
+                   " [--mappers ppiray,ppiray-exact,ppiray-average,pt,raycast,zsweep]\n";
       return arg == "--help" ? 0 : 2;
     }
   }
@@ -193,10 +195,13 @@ int main(int argc, char* argv[])
   while (std::getline(list, name, ','))
   {
     std::cerr << "measuring " << name << " ..." << std::endl;
-    if (name == "ppiray")
+    if (name == "ppiray" || name == "ppiray-exact" || name == "ppiray-average")
     {
       vtkNew<vtkUnstructuredGridGPURayCastMapper> m;
-      rows.push_back(Measure("PPIRay (partial pre-integration)", m, grid, o, o.Views));
+      m->SetIntegrationMode(name == "ppiray-exact" ? vtkUnstructuredGridGPURayCastMapper::EXACT_LINEAR
+          : name == "ppiray-average"               ? vtkUnstructuredGridGPURayCastMapper::AVERAGE_COLOR
+                                                   : vtkUnstructuredGridGPURayCastMapper::PARTIAL_PRE_INTEGRATION);
+      rows.push_back(Measure(std::string("PPIRay ") + m->GetIntegrationModeAsString(), m, grid, o, o.Views));
     }
     else if (name == "pt")
     {
@@ -222,7 +227,7 @@ int main(int argc, char* argv[])
   double ours = 0;
   for (const Row& r : rows)
   {
-    if (r.Name.rfind("PPIRay", 0) == 0)
+    if (r.Name == "PPIRay PARTIAL_PRE_INTEGRATION")
     {
       ours = r.Ms;
     }
