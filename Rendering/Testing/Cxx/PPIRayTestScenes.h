@@ -113,6 +113,31 @@ inline void SmoothTransferFunction(vtkVolumeProperty* property, double lo, doubl
   property->SetInterpolationTypeToLinear();
 }
 
+// 41 control points on a 0..100 scalar range: a smooth colour ramp (9 nodes),
+// a low wavy opacity ramp (28 nodes) and a one-value-wide opacity spike
+// 0 -> 1 -> 0 at 70, which sampling-based mappers miss.
+inline void SpikeTransferFunction(vtkVolumeProperty* property)
+{
+  vtkNew<vtkColorTransferFunction> color;
+  for (int i = 0; i <= 8; ++i)
+  {
+    const double u = i / 8.0;
+    color->AddRGBPoint(100.0 * u, 0.2 + 0.8 * u, 0.9 - 0.7 * u * u, 1.0 - u);
+  }
+  vtkNew<vtkPiecewiseFunction> opacity;
+  for (int i = 0; i < 28; ++i)
+  {
+    opacity->AddPoint(2.0 + 1.9 * i, 0.02 + 0.02 * (i % 3));
+  }
+  opacity->AddPoint(69.5, 0.0);
+  opacity->AddPoint(70.0, 1.0);
+  opacity->AddPoint(70.5, 0.0);
+  opacity->AddPoint(100.0, 0.05);
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetScalarOpacityUnitDistance(0.05);
+}
+
 // Window + renderer for a regression test: fixed size, no multisampling.
 struct Scene
 {

@@ -9,11 +9,9 @@
 // Also: switching modes rebuilds no cell data.
 
 #include "PPIRayImageCompare.h"
+#include "PPIRayReferenceImage.h"
 #include "PPIRayTestScenes.h"
-#include "vtkFloatArray.h"
-#include "vtkImageData.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
-#include "vtkUnstructuredGridReferenceRenderer.h"
 
 #include <iostream>
 
@@ -21,42 +19,6 @@ namespace
 {
 constexpr int Size = 160;
 
-void SpikeTransferFunction(vtkVolumeProperty* property)
-{
-  vtkNew<vtkColorTransferFunction> color;
-  for (int i = 0; i <= 8; ++i)
-  {
-    const double u = i / 8.0;
-    color->AddRGBPoint(100.0 * u, 0.2 + 0.8 * u, 0.9 - 0.7 * u * u, 1.0 - u);
-  }
-  vtkNew<vtkPiecewiseFunction> opacity;
-  for (int i = 0; i < 28; ++i)
-  {
-    opacity->AddPoint(2.0 + 1.9 * i, 0.02 + 0.02 * (i % 3));
-  }
-  opacity->AddPoint(69.5, 0.0);
-  opacity->AddPoint(70.0, 1.0);
-  opacity->AddPoint(70.5, 0.0);
-  opacity->AddPoint(100.0, 0.05);
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(0.05);
-}
-
-std::vector<unsigned char> ReferenceRGB(vtkImageData* image)
-{
-  auto* rgba = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
-  std::vector<unsigned char> rgb(3 * Size * Size);
-  for (int i = 0; i < Size * Size; ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double v = std::min(1.0, std::max(0.0, double(rgba->GetComponent(i, c))));
-      rgb[3 * i + c] = static_cast<unsigned char>(std::lround(255.0 * v));
-    }
-  }
-  return rgb;
-}
 }
 
 int TestGPURayCastIntegrationModes(int, char*[])
@@ -74,7 +36,7 @@ int TestGPURayCastIntegrationModes(int, char*[])
     ppiray_test::Scene scene(Size, Size);
     if (spikes)
     {
-      SpikeTransferFunction(scene.Property);
+      ppiray_test::SpikeTransferFunction(scene.Property);
     }
     else
     {
@@ -88,13 +50,8 @@ int TestGPURayCastIntegrationModes(int, char*[])
     scene.Renderer->ResetCamera();
     scene.Window->Render();
 
-    vtkNew<vtkUnstructuredGridReferenceRenderer> reference;
-    reference->SetInputData(grid);
-    reference->SetVolumeProperty(scene.Property);
-    reference->SetCamera(scene.Renderer->GetActiveCamera());
-    reference->SetImageSize(Size, Size);
-    reference->Update();
-    const auto exact = ReferenceRGB(reference->GetOutput());
+    const auto exact = ppiray_test::ReferenceRGB(
+      grid, scene.Property, scene.Renderer->GetActiveCamera(), Size, Size);
 
     const char* scene_name = spikes ? "spikes" : "smooth";
     for (int mode : { vtkUnstructuredGridGPURayCastMapper::PARTIAL_PRE_INTEGRATION,

@@ -19,27 +19,7 @@ int TestGPURayCastSpike(int argc, char* argv[])
     [](double x, double y, double z) { return 100.0 * ppiray_test::Blob(x, y, z) / 1.3; });
 
   ppiray_test::Scene scene(300, 300);
-  vtkNew<vtkColorTransferFunction> color;
-  for (int i = 0; i <= 8; ++i)
-  {
-    const double u = i / 8.0;
-    color->AddRGBPoint(100.0 * u, 0.2 + 0.8 * u, 0.9 - 0.7 * u * u, 1.0 - u);
-  }
-  vtkNew<vtkPiecewiseFunction> opacity;
-  // A low wavy ramp: 28 nodes.
-  for (int i = 0; i < 28; ++i)
-  {
-    const double s = 2.0 + 1.9 * i;
-    opacity->AddPoint(s, 0.02 + 0.02 * (i % 3));
-  }
-  // The spike: one scalar unit wide, fully opaque at its peak.
-  opacity->AddPoint(69.5, 0.0);
-  opacity->AddPoint(70.0, 1.0);
-  opacity->AddPoint(70.5, 0.0);
-  opacity->AddPoint(100.0, 0.05);
-  scene.Property->SetColor(color);
-  scene.Property->SetScalarOpacity(opacity);
-  scene.Property->SetScalarOpacityUnitDistance(0.05);
+  ppiray_test::SpikeTransferFunction(scene.Property);
 
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
   mapper->SetInputData(grid);
@@ -53,7 +33,10 @@ int TestGPURayCastSpike(int argc, char* argv[])
   const auto image = ppiray_test::ReadRGB(scene.Window);
   const auto check = ppiray_test::CheckPixels(
     scene.Renderer, grid, scene.Property, image, 300, 300, 25);
-  std::cout << "control points: " << color->GetSize() + opacity->GetSize() << ", pixels checked "
+  std::cout << "control points: "
+            << scene.Property->GetRGBTransferFunction()->GetSize() +
+      scene.Property->GetScalarOpacity()->GetSize()
+            << ", pixels checked "
             << check.Pixels << ", max difference " << check.MaxDifference << "/255\n";
   // Bound: 8-bit rounding (0.5) plus the 0.999 early termination (0.26) plus
   // the Psi table's bilinear error; 2/255 leaves room for llvmpipe's float

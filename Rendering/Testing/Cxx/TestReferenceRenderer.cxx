@@ -9,11 +9,9 @@
 // Every comparison is printed; the bounds are on PPIRay and on the smooth case.
 
 #include "PPIRayImageCompare.h"
+#include "PPIRayReferenceImage.h"
 #include "PPIRayTestScenes.h"
-#include "vtkFloatArray.h"
-#include "vtkImageData.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
-#include "vtkUnstructuredGridReferenceRenderer.h"
 #include "vtkUnstructuredGridVolumeRayCastMapper.h"
 #include "vtkUnstructuredGridVolumeZSweepMapper.h"
 
@@ -22,51 +20,6 @@
 namespace
 {
 constexpr int Size = 160;
-
-void SpikeTransferFunction(vtkVolumeProperty* property)
-{
-  vtkNew<vtkColorTransferFunction> color;
-  for (int i = 0; i <= 8; ++i)
-  {
-    const double u = i / 8.0;
-    color->AddRGBPoint(100.0 * u, 0.2 + 0.8 * u, 0.9 - 0.7 * u * u, 1.0 - u);
-  }
-  vtkNew<vtkPiecewiseFunction> opacity;
-  for (int i = 0; i < 28; ++i)
-  {
-    opacity->AddPoint(2.0 + 1.9 * i, 0.02 + 0.02 * (i % 3));
-  }
-  opacity->AddPoint(69.5, 0.0);
-  opacity->AddPoint(70.0, 1.0);
-  opacity->AddPoint(70.5, 0.0);
-  opacity->AddPoint(100.0, 0.05);
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(0.05);
-}
-
-// The reference image as 8-bit RGB over black, like a window read-back.
-std::vector<unsigned char> Reference(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
-  vtkCamera* camera)
-{
-  vtkNew<vtkUnstructuredGridReferenceRenderer> reference;
-  reference->SetInputData(grid);
-  reference->SetVolumeProperty(property);
-  reference->SetCamera(camera);
-  reference->SetImageSize(Size, Size);
-  reference->Update();
-  auto* rgba = vtkFloatArray::SafeDownCast(reference->GetOutput()->GetPointData()->GetScalars());
-  std::vector<unsigned char> rgb(3 * Size * Size);
-  for (int i = 0; i < Size * Size; ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double v = std::min(1.0, std::max(0.0, static_cast<double>(rgba->GetComponent(i, c))));
-      rgb[3 * i + c] = static_cast<unsigned char>(std::lround(255.0 * v));
-    }
-  }
-  return rgb;
-}
 
 struct Comparison
 {
@@ -89,7 +42,8 @@ Comparison CompareAll(vtkUnstructuredGrid* grid, const std::function<void(vtkVol
     scene.Window->Render();
     if (reference.empty())
     {
-      reference = Reference(grid, scene.Property, scene.Renderer->GetActiveCamera());
+      reference = ppiray_test::ReferenceRGB(
+        grid, scene.Property, scene.Renderer->GetActiveCamera(), Size, Size);
     }
     return ppiray_test::Compare(ppiray_test::ReadRGB(scene.Window), reference);
   };
@@ -144,7 +98,7 @@ int TestReferenceRenderer(int, char*[])
     std::cerr << "FAILED: VTK's mappers and the reference disagree on a smooth function\n";
     ++errors;
   }
-  const auto spikes = CompareAll(spikeGrid, SpikeTransferFunction, true, "spikes");
+  const auto spikes = CompareAll(spikeGrid, ppiray_test::SpikeTransferFunction, true, "spikes");
   const auto nonConvex = CompareAll(tunnel,
     [](vtkVolumeProperty* p) { ppiray_test::SmoothTransferFunction(p, 0.0, 1.3, 0.7, 0.1); },
     false, "non-convex");
