@@ -38,7 +38,7 @@ double Dot(const Vec3& a, const Vec3& b)
 // its face planes are then not a partition of space a ray can march through.
 constexpr double FlatVolumeRatio = 1e-12;
 
-double LongestEdgeCubed(const double* p[4])
+double LongestEdge(const double* p[4])
 {
   double longest = 0.0;
   for (int i = 0; i < 4; ++i)
@@ -49,7 +49,7 @@ double LongestEdgeCubed(const double* p[4])
       longest = std::max(longest, Dot(e, e));
     }
   }
-  return longest * std::sqrt(longest);
+  return std::sqrt(longest);
 }
 }
 
@@ -107,9 +107,10 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->FacePlanes.assign(16 * numberOfTets, 0.0f);
   std::vector<signed char> orientation(numberOfTets, 1);
   std::atomic<vtkIdType> degenerate(0), inverted(0);
+  double maximumEdge = 0.0;
   const double* local = this->LocalPoints.data();
   const vtkIdType* tets = this->Tets.data();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) reduction(max : maximumEdge)
   for (vtkIdType t = 0; t < numberOfTets; ++t)
   {
     const double* p[4];
@@ -118,13 +119,14 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
       p[v] = local + 3 * tets[4 * t + v];
     }
     const double volume6 = vtkUnstructuredGridCellAdjacency::SignedVolume6(p[0], p[1], p[2], p[3]);
-    const double scale = LongestEdgeCubed(p);
-    if (!(std::abs(volume6) > FlatVolumeRatio * scale))
+    const double edge = LongestEdge(p);
+    if (!(std::abs(volume6) > FlatVolumeRatio * edge * edge * edge))
     {
       this->Degenerate[t] = 1;
       ++degenerate;
       continue;
     }
+    maximumEdge = std::max(maximumEdge, edge);
     const double sign = volume6 > 0 ? 1.0 : -1.0;
     if (sign < 0)
     {
@@ -152,6 +154,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     }
   }
   this->NumberOfDegenerateTetrahedra = degenerate.load();
+  this->MaximumEdgeLength = maximumEdge;
   this->NumberOfInvertedTetrahedra = inverted.load();
 
   // Neighbours, without the flat tetrahedra.

@@ -65,6 +65,8 @@ public:
   const double* GetOrigin() const { return this->Origin; }
   /** Length of the diagonal of the bounds. */
   double GetLength() const { return this->Length; }
+  /** Longest edge of a rendered tetrahedron: no ray segment in a cell is longer. */
+  double GetMaximumEdgeLength() const { return this->MaximumEdgeLength; }
   /** 16 floats per tetrahedron: (n_f, d_f) for faces f = 0..3. */
   const std::vector<float>& GetFacePlanes() const { return this->FacePlanes; }
   /** 4 ints per tetrahedron: neighbour through face f, -1 on the boundary. */
@@ -98,6 +100,7 @@ protected:
 
   double Origin[3] = { 0, 0, 0 };
   double Length = 0;
+  double MaximumEdgeLength = 0;
   std::vector<vtkIdType> Tets; // 4 point ids per tetrahedron
   std::vector<vtkIdType> CellIds;
   std::vector<unsigned char> Degenerate;

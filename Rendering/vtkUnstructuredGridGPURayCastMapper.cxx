@@ -15,6 +15,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkPPIRayBufferTexture.h"
+#include "vtkPreIntegrationTable.h"
 #include "vtkPoints.h"
 #include "vtkPsiTable.h"
 #include "vtkRenderer.h"
@@ -35,6 +36,7 @@
 #include "piece_ppi_fs.h"
 #include "ray_fs.h"
 #include "segment_average_fs.h"
+#include "segment_full_fs.h"
 #include "segment_split_fs.h"
 #include "transfer_function_fs.h"
 
@@ -80,6 +82,11 @@ public:
   vtkNew<vtkOpenGLVertexArrayObject> EntryVAO;
   vtkNew<vtkTextureObject> PsiTexture;
   int PsiTextureSize = 0;
+  double FieldRange[2] = { 0, 1 };
+  vtkNew<vtkPreIntegrationTable> FullTable;
+  vtkNew<vtkTextureObject> FullTableTexture;
+  size_t FullTableBytes = 0;
+  vtkTimeStamp FullTableTime;
 
   // Render targets, sized to the viewport.
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
@@ -118,6 +125,8 @@ public:
     this->EntryVAO->ReleaseGraphicsResources();
     this->PsiTexture->ReleaseGraphicsResources(window);
     this->PsiTextureSize = 0;
+    this->FullTableTexture->ReleaseGraphicsResources(window);
+    this->FullTableBytes = 0;
     this->Framebuffer->ReleaseGraphicsResources(window);
     this->EntryTexture->ReleaseGraphicsResources(window);
     for (int i = 0; i < 2; ++i)
@@ -188,6 +197,9 @@ std::string MarchShader(int mode)
     case vtkUnstructuredGridGPURayCastMapper::AVERAGE_COLOR:
       integrate = segment_average_fs;
       break;
+    case vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION:
+      integrate = segment_full_fs;
+      break;
     default:
       integrate = std::string(piece_ppi_fs) + segment_split_fs;
   }
@@ -232,7 +244,8 @@ vtkUnstructuredGridGPURayCastMapper::~vtkUnstructuredGridGPURayCastMapper() = de
 //------------------------------------------------------------------------------
 void vtkUnstructuredGridGPURayCastMapper::SetIntegrationMode(int mode)
 {
-  if (mode != PARTIAL_PRE_INTEGRATION && mode != EXACT_LINEAR && mode != AVERAGE_COLOR)
+  if (mode != PARTIAL_PRE_INTEGRATION && mode != EXACT_LINEAR && mode != FULL_PRE_INTEGRATION &&
+    mode != AVERAGE_COLOR)
   {
     vtkErrorMacro("Unknown integration mode " << mode << "; keeping "
                                               << this->GetIntegrationModeAsString() << ".");
@@ -254,9 +267,17 @@ const char* vtkUnstructuredGridGPURayCastMapper::GetIntegrationModeAsString()
       return "EXACT_LINEAR";
     case AVERAGE_COLOR:
       return "AVERAGE_COLOR";
+    case FULL_PRE_INTEGRATION:
+      return "FULL_PRE_INTEGRATION";
     default:
       return "PARTIAL_PRE_INTEGRATION";
   }
+}
+
+//------------------------------------------------------------------------------
+double vtkUnstructuredGridGPURayCastMapper::GetPreIntegrationTableBuildTime()
+{
+  return this->Internals->FullTableBytes ? this->Internals->FullTable->GetBuildTime() : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -273,7 +294,7 @@ vtkIdType vtkUnstructuredGridGPURayCastMapper::GetGPUMemorySize()
   size_t bytes = in.Planes.GetBytes() + in.Neighbors.GetBytes() + in.Field.GetBytes() +
     in.BoundaryFaces.GetBytes() + in.ControlPointTexels.GetBytes() + in.BoundaryBytes +
     static_cast<size_t>(in.PsiTextureSize) * in.PsiTextureSize * sizeof(float) +
-    in.TargetBytes();
+    in.FullTableBytes + in.TargetBytes();
   return static_cast<vtkIdType>(bytes);
 }
 
@@ -378,6 +399,7 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateField(vtkUnstructuredGridBase* i
   }
   in.FieldArray = scalars;
   in.FieldCellFlag = cellFlag;
+  scalars->GetRange(in.FieldRange, 0);
   in.FieldTime.Modified();
   in.FieldOnGPU = false;
   in.Cells->BuildField(scalars, cellFlag == 1, 0);
@@ -455,6 +477,10 @@ bool vtkUnstructuredGridGPURayCastMapper::UploadToGPU(vtkOpenGLRenderWindow* con
     in.TransferFunctionOnGPU = true;
     ++this->TransferFunctionUploadCount;
   }
+  if (!this->UploadPreIntegrationTable(context))
+  {
+    return false;
+  }
   const bool needsPsi = this->IntegrationMode == PARTIAL_PRE_INTEGRATION;
   if (!needsPsi && in.PsiTextureSize)
   {
@@ -473,6 +499,47 @@ bool vtkUnstructuredGridGPURayCastMapper::UploadToGPU(vtkOpenGLRenderWindow* con
       const_cast<float*>(table.data()));
     in.PsiTextureSize = this->PsiTableSize;
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkUnstructuredGridGPURayCastMapper::UploadPreIntegrationTable(vtkOpenGLRenderWindow* context)
+{
+  vtkInternals& in = *this->Internals;
+  if (this->IntegrationMode != FULL_PRE_INTEGRATION)
+  {
+    if (in.FullTableBytes)
+    {
+      in.FullTableTexture->ReleaseGraphicsResources(context);
+      in.FullTableBytes = 0;
+    }
+    return true;
+  }
+  const int n = this->PreIntegrationTableSize;
+  const vtkMTimeType sources = std::max(
+    { in.TransferFunctionTime.GetMTime(), in.FieldTime.GetMTime(), in.GeometryTime.GetMTime() });
+  if (in.FullTableBytes && in.FullTable->GetScalarSize() == n &&
+    in.FullTableTime.GetMTime() > sources)
+  {
+    return true;
+  }
+  in.FullTable->Build(in.ControlPoints, in.FieldRange[0], in.FieldRange[1],
+    in.Cells->GetMaximumEdgeLength(), n, n);
+  in.FullTableTexture->SetContext(context);
+  in.FullTableTexture->SetMinificationFilter(vtkTextureObject::Linear);
+  in.FullTableTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+  in.FullTableTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+  in.FullTableTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+  in.FullTableTexture->SetWrapR(vtkTextureObject::ClampToEdge);
+  if (!in.FullTableTexture->Create3DFromRaw(n, n, n, 4, VTK_FLOAT,
+        const_cast<float*>(in.FullTable->GetTable().data())))
+  {
+    vtkErrorMacro("Could not upload the " << n << "^3 pre-integration table.");
+    in.FullTableBytes = 0;
+    return false;
+  }
+  in.FullTableBytes = in.FullTable->GetTable().size() * sizeof(float);
+  in.FullTableTime.Modified();
   return true;
 }
 
@@ -806,6 +873,19 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
       textures.push_back(in.PsiTexture);
       names.push_back("psiTable");
     }
+    if (in.FullTableBytes)
+    {
+      textures.push_back(in.FullTableTexture);
+      names.push_back("preIntegrationTable");
+      const float range[2] = { static_cast<float>(in.FullTable->GetScalarRange()[0]),
+        static_cast<float>(in.FullTable->GetScalarRange()[1]) };
+      const float size[3] = { static_cast<float>(in.FullTable->GetScalarSize()),
+        static_cast<float>(in.FullTable->GetScalarSize()),
+        static_cast<float>(in.FullTable->GetLengthSize()) };
+      march->SetUniform2f("tableScalarRange", range);
+      march->SetUniformf("tableMaximumLength", static_cast<float>(in.FullTable->GetMaximumLength()));
+      march->SetUniform3f("tableSize", size);
+    }
     for (size_t i = 0; i < textures.size(); ++i)
     {
       textures[i]->Activate();
@@ -860,6 +940,7 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "MaximumNumberOfPeels: " << this->MaximumNumberOfPeels << "\n";
   os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
   os << indent << "PsiTableSize: " << this->PsiTableSize << "\n";
+  os << indent << "PreIntegrationTableSize: " << this->PreIntegrationTableSize << "\n";
   os << indent << "TerminationOpacity: " << this->TerminationOpacity << "\n";
   os << indent << "NumberOfPeels: " << this->NumberOfPeels << "\n";
   os << indent << "GeometryUploadCount: " << this->GeometryUploadCount << "\n";

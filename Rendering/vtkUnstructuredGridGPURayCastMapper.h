@@ -53,6 +53,9 @@ public:
    * - PARTIAL_PRE_INTEGRATION (default): stops at every transfer-function
    *   control point, each piece by Moreland and Angel's Psi table.
    * - EXACT_LINEAR: the same stops, Psi in closed form in the shader (no table).
+   * - FULL_PRE_INTEGRATION: the whole cell segment by one lookup in the 3D
+   *   table over (s_front, s_back, length) of Röttger et al., built with
+   *   Weiler's incremental method, rebuilt on every transfer-function change.
    * - AVERAGE_COLOR: the whole cell segment with the mean of its end colours
    *   and linear attenuation (Shirley-Tuchman; what projected tetrahedra do),
    *   no stops: cheap, misses transfer-function features inside a cell.
@@ -62,6 +65,7 @@ public:
   {
     PARTIAL_PRE_INTEGRATION = 0,
     EXACT_LINEAR = 1,
+    FULL_PRE_INTEGRATION = 2,
     AVERAGE_COLOR = 3
   };
 
@@ -76,6 +80,7 @@ public:
     this->SetIntegrationMode(PARTIAL_PRE_INTEGRATION);
   }
   void SetIntegrationModeToExactLinear() { this->SetIntegrationMode(EXACT_LINEAR); }
+  void SetIntegrationModeToFullPreIntegration() { this->SetIntegrationMode(FULL_PRE_INTEGRATION); }
   void SetIntegrationModeToAverageColor() { this->SetIntegrationMode(AVERAGE_COLOR); }
   const char* GetIntegrationModeAsString();
   ///@}
@@ -107,6 +112,20 @@ public:
   vtkSetClampMacro(PsiTableSize, int, 16, 4096);
   vtkGetMacro(PsiTableSize, int);
   ///@}
+
+  ///@{
+  /**
+   * Resolution N of the FULL_PRE_INTEGRATION table, N x N x N texels over
+   * (s_front, s_back, length) (default 64: 4 MB).
+   */
+  vtkSetClampMacro(PreIntegrationTableSize, int, 4, 512);
+  vtkGetMacro(PreIntegrationTableSize, int);
+  ///@}
+
+  /**
+   * Seconds the last FULL_PRE_INTEGRATION table build took (0 if none).
+   */
+  double GetPreIntegrationTableBuildTime();
 
   ///@{
   /**
@@ -153,6 +172,7 @@ protected:
   int MaximumNumberOfPeels = 64;
   int MaximumNumberOfSteps = 0;
   int PsiTableSize = 512;
+  int PreIntegrationTableSize = 64;
   double TerminationOpacity = 0.999;
   int NumberOfPeels = 0;
   int GeometryUploadCount = 0;
@@ -164,6 +184,7 @@ protected:
   bool UpdateField(vtkUnstructuredGridBase* input);
   bool UpdateTransferFunction(vtkVolumeProperty* property);
   bool UploadToGPU(vtkOpenGLRenderWindow* context);
+  bool UploadPreIntegrationTable(vtkOpenGLRenderWindow* context);
   bool PrepareTargets(vtkOpenGLRenderWindow* context, int width, int height);
   void CopyOpaqueDepth(
     vtkOpenGLRenderWindow* context, int source, int x0, int y0, int width, int height);

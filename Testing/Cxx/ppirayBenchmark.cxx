@@ -6,7 +6,7 @@
 //
 //   ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]
 //                   [--views N] [--peer-views N]
-//                   [--mappers ppiray,ppiray-exact,ppiray-average,pt,raycast,zsweep]
+//                   [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]
 //
 // Default scene: vtkRTAnalyticSource over [-32, 32]^3 split into 1.31 M
 // tetrahedra (vtkDataSetTriangleFilter), 512x512, 8 views.
@@ -176,7 +176,7 @@ int main(int argc, char* argv[])
     {
       std::cout << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]"
                    " [--views N] [--peer-views N]"
-                   " [--mappers ppiray,ppiray-exact,ppiray-average,pt,raycast,zsweep]\n";
+                   " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]\n";
       return arg == "--help" ? 0 : 2;
     }
   }
@@ -195,13 +195,20 @@ int main(int argc, char* argv[])
   while (std::getline(list, name, ','))
   {
     std::cerr << "measuring " << name << " ..." << std::endl;
-    if (name == "ppiray" || name == "ppiray-exact" || name == "ppiray-average")
+    if (name == "ppiray" || name == "ppiray-exact" || name == "ppiray-average" ||
+      name == "ppiray-full")
     {
       vtkNew<vtkUnstructuredGridGPURayCastMapper> m;
       m->SetIntegrationMode(name == "ppiray-exact" ? vtkUnstructuredGridGPURayCastMapper::EXACT_LINEAR
           : name == "ppiray-average"               ? vtkUnstructuredGridGPURayCastMapper::AVERAGE_COLOR
-                                                   : vtkUnstructuredGridGPURayCastMapper::PARTIAL_PRE_INTEGRATION);
+          : name == "ppiray-full" ? vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION
+                                  : vtkUnstructuredGridGPURayCastMapper::PARTIAL_PRE_INTEGRATION);
       rows.push_back(Measure(std::string("PPIRay ") + m->GetIntegrationModeAsString(), m, grid, o, o.Views));
+      if (name == "ppiray-full")
+      {
+        std::printf("FULL_PRE_INTEGRATION table %d^3 built in %.3f s\n",
+          m->GetPreIntegrationTableSize(), m->GetPreIntegrationTableBuildTime());
+      }
     }
     else if (name == "pt")
     {

@@ -2,6 +2,9 @@
 // with the error bound each mode documents (1/255 units, per channel):
 //   PARTIAL_PRE_INTEGRATION  max 1 everywhere (8-bit rounding + Psi table)
 //   EXACT_LINEAR             max 1 everywhere (8-bit rounding + float closed form)
+//   FULL_PRE_INTEGRATION     smooth transfer function: max 2 (64^3 table);
+//                            spikes narrower than the table's s spacing are
+//                            blurred or lost (printed, not bounded)
 //   AVERAGE_COLOR            smooth transfer function: mean 1, max 8;
 //                            no bound with spikes (it misses them: printed,
 //                            and required to be visibly off, so the scene
@@ -56,17 +59,27 @@ int TestGPURayCastIntegrationModes(int, char*[])
     const char* scene_name = spikes ? "spikes" : "smooth";
     for (int mode : { vtkUnstructuredGridGPURayCastMapper::PARTIAL_PRE_INTEGRATION,
            vtkUnstructuredGridGPURayCastMapper::EXACT_LINEAR,
+           vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION,
            vtkUnstructuredGridGPURayCastMapper::AVERAGE_COLOR })
     {
       mapper->SetIntegrationMode(mode);
       scene.Window->Render();
       const auto d = ppiray_test::Compare(ppiray_test::ReadRGB(scene.Window), exact);
       std::cout << scene_name << " " << mapper->GetIntegrationModeAsString() << ": mean "
-                << d.Mean << " p99 " << d.P99 << " max " << d.Max << "\n";
+                << d.Mean << " p99 " << d.P99 << " max " << d.Max;
+      if (mode == vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION)
+      {
+        std::cout << " (table built in " << mapper->GetPreIntegrationTableBuildTime() << " s)";
+      }
+      std::cout << "\n";
       bool ok = true;
       if (mode == vtkUnstructuredGridGPURayCastMapper::AVERAGE_COLOR)
       {
         ok = spikes ? d.Max > 10 : (d.Mean <= 1.0 && d.Max <= 8);
+      }
+      else if (mode == vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION)
+      {
+        ok = spikes || d.Max <= 2;
       }
       else
       {
