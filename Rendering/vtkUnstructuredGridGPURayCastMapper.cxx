@@ -277,7 +277,7 @@ const char* vtkUnstructuredGridGPURayCastMapper::GetIntegrationModeAsString()
 //------------------------------------------------------------------------------
 double vtkUnstructuredGridGPURayCastMapper::GetPreIntegrationTableBuildTime()
 {
-  return this->Internals->FullTableBytes ? this->Internals->FullTable->GetBuildTime() : 0.0;
+  return this->Internals->FullTable->GetBuildTime();
 }
 
 //------------------------------------------------------------------------------

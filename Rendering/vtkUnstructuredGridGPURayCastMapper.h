@@ -123,7 +123,7 @@ public:
   ///@}
 
   /**
-   * Seconds the last FULL_PRE_INTEGRATION table build took (0 if none).
+   * Seconds the last FULL_PRE_INTEGRATION table build took (0 if none yet).
    */
   double GetPreIntegrationTableBuildTime();
 

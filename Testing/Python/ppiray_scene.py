@@ -50,9 +50,10 @@ def volume_property(grid):
     return prop
 
 
-def scene(grid, mapper, size):
-    """A window of size x size rendering `grid` with `mapper` and volume_property()."""
-    prop = volume_property(grid)
+def scene(grid, mapper, size, prop=None):
+    """A window of size x size rendering `grid` with `mapper` and `prop`
+    (default volume_property(grid)), from the three-quarter view."""
+    prop = prop or volume_property(grid)
     b = grid.GetBounds()
     mapper.SetInputData(grid)
     volume = vtkVolume()

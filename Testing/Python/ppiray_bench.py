@@ -1,0 +1,249 @@
+"""Module/run bench [--scenes LIST] [--size WxH] [--views N] [--out DIR] [--methods LIST]
+
+Speed against error. For every scene (ppiray_bench_scenes.py) and method,
+renders N views (after a warm-up frame; each frame ends with
+WaitForCompletion) in a subprocess of its own, so that a crashing peer is
+reported and the run goes on, and measures every image against the exact
+CPU reference (vtkUnstructuredGridReferenceRenderer, double precision) of
+the same view. Writes DIR/results.csv, DIR/results.md, DIR/pareto.png and
+DIR/<scene>.png (images and differences side by side).
+"""
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.environ.get("PPIRAY_ROOT", os.path.dirname(os.path.dirname(HERE)))
+DATA_ROOT = os.environ.get("PPIRAY_DATA_ROOT", os.path.join(ROOT, "..", "shared", "data"))
+
+# (method, mode, settings): our modes and table sizes, then VTK's mappers.
+METHODS = [
+    ("ppiray", "PARTIAL_PRE_INTEGRATION psi=64", {"mode": 0, "psi": 64}),
+    ("ppiray", "PARTIAL_PRE_INTEGRATION psi=256", {"mode": 0, "psi": 256}),
+    ("ppiray", "PARTIAL_PRE_INTEGRATION psi=512 (default)", {"mode": 0, "psi": 512}),
+    ("ppiray", "PARTIAL_PRE_INTEGRATION psi=1024", {"mode": 0, "psi": 1024}),
+    ("ppiray", "EXACT_LINEAR", {"mode": 1}),
+    ("ppiray", "FULL_PRE_INTEGRATION table=32", {"mode": 2, "table": 32}),
+    ("ppiray", "FULL_PRE_INTEGRATION table=64", {"mode": 2, "table": 64}),
+    ("ppiray", "FULL_PRE_INTEGRATION table=128", {"mode": 2, "table": 128}),
+    ("ppiray", "AVERAGE_COLOR", {"mode": 3}),
+    ("vtkProjectedTetrahedraMapper", "", {}),
+    ("vtkUnstructuredGridVolumeRayCastMapper", "default integrator", {}),
+    ("vtkUnstructuredGridVolumeRayCastMapper", "partial pre-integration", {"ppi": True}),
+    ("vtkUnstructuredGridVolumeZSweepMapper", "", {}),
+    ("resample+vtkGPUVolumeRayCastMapper", "64^3", {"dims": 64}),
+    ("resample+vtkGPUVolumeRayCastMapper", "128^3", {"dims": 128}),
+    ("resample+vtkGPUVolumeRayCastMapper", "256^3", {"dims": 256}),
+]
+
+
+def make_window(scene_name, args, mapper):
+    import ppiray_bench_scenes
+    from ppiray_scene import scene
+
+    built = ppiray_bench_scenes.build(scene_name, ROOT, DATA_ROOT, args.wavelet_extent)
+    if built is None:
+        raise SystemExit("no data for scene %s under %s" % (scene_name, DATA_ROOT))
+    grid, prop = built
+    window, renderer = scene(grid, mapper, args.width, prop)
+    window.SetSize(args.width, args.height)
+    return grid, prop, window, renderer
+
+
+def view(renderer, index, views):
+    renderer.GetActiveCamera().Azimuth(0.0 if index == 0 else 360.0 / views)
+    renderer.ResetCameraClippingRange()
+
+
+def run_worker(args):
+    """Render one method on one scene; print a JSON line; images to .npy."""
+    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+    import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+
+    method, settings = args.worker_method, json.loads(args.worker_settings)
+    extra = {}
+    if method == "ppiray":
+        import ppiray
+
+        mapper = ppiray.vtkUnstructuredGridGPURayCastMapper()
+        mapper.SetIntegrationMode(settings["mode"])
+        mapper.SetPsiTableSize(settings.get("psi", 512))
+        mapper.SetPreIntegrationTableSize(settings.get("table", 64))
+    elif method == "vtkProjectedTetrahedraMapper":
+        from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLProjectedTetrahedraMapper
+
+        mapper = vtkOpenGLProjectedTetrahedraMapper()
+    elif method == "vtkUnstructuredGridVolumeRayCastMapper":
+        from vtkmodules.vtkRenderingVolume import (
+            vtkUnstructuredGridPartialPreIntegration,
+            vtkUnstructuredGridVolumeRayCastMapper,
+        )
+
+        mapper = vtkUnstructuredGridVolumeRayCastMapper()
+        mapper.SetImageSampleDistance(1.0)
+        mapper.AutoAdjustSampleDistancesOff()
+        if settings.get("ppi"):
+            mapper.SetRayIntegrator(vtkUnstructuredGridPartialPreIntegration())
+    elif method == "vtkUnstructuredGridVolumeZSweepMapper":
+        from vtkmodules.vtkRenderingVolume import vtkUnstructuredGridVolumeZSweepMapper
+
+        mapper = vtkUnstructuredGridVolumeZSweepMapper()
+        mapper.SetImageSampleDistance(1.0)
+        mapper.AutoAdjustSampleDistancesOff()
+    else:
+        mapper = None
+    if mapper is None:  # resample to a grid, then VTK's GPU ray caster for images
+        from ppiray_bench_resample import resampled_window
+
+        grid, prop, window, renderer, mapper, extra = resampled_window(
+            args.scene, args, settings["dims"], make_window)
+    else:
+        grid, prop, window, renderer = make_window(args.scene, args, mapper)
+    times = []
+    for index in range(args.views):
+        view(renderer, index, args.views)
+        if index == 0:
+            window.Render()  # warm-up: uploads, shaders, sorting structures
+            window.WaitForCompletion()
+        start = time.perf_counter()
+        window.Render()
+        window.WaitForCompletion()
+        times.append(1000.0 * (time.perf_counter() - start))
+        grab = vtkWindowToImageFilter()
+        grab.SetInput(window)
+        grab.ReadFrontBufferOff()
+        grab.Update()
+        pixels = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3]
+        np.save(os.path.join(args.worker_out, "view%d.npy" % index),
+                pixels.reshape(args.height, args.width, 3))
+    result = {"ms": times, "cells": grid.GetNumberOfCells(), "gpu_bytes": "", **extra}
+    if method == "ppiray":
+        result["gpu_bytes"] = mapper.GetGPUMemorySize()
+        if settings["mode"] == 2:
+            result["table_build_s"] = mapper.GetPreIntegrationTableBuildTime()
+    print("RESULT " + json.dumps(result))
+    return 0
+
+
+def reference_views(scene_name, args, folder):
+    """The exact images of every view, cached as .npy in `folder`."""
+    import ppiray
+
+    paths = [os.path.join(folder, "reference_view%d.npy" % i) for i in range(args.views)]
+    if all(os.path.exists(p) for p in paths):
+        return [np.load(p) for p in paths]
+    grid, prop, window, renderer = make_window(
+        scene_name, args, ppiray.vtkUnstructuredGridGPURayCastMapper())
+    images = []
+    for index in range(args.views):
+        view(renderer, index, args.views)
+        reference = ppiray.vtkUnstructuredGridReferenceRenderer()
+        reference.SetInputData(grid)
+        reference.SetVolumeProperty(prop)
+        reference.SetCamera(renderer.GetActiveCamera())
+        reference.SetImageSize(args.width, args.height)
+        start = time.perf_counter()
+        reference.Update()
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+
+        rgba = vtk_to_numpy(reference.GetOutput().GetPointData().GetScalars())
+        rgb = np.clip(255.0 * rgba[:, :3], 0, 255).reshape(args.height, args.width, 3)
+        np.save(paths[index], rgb)
+        images.append(rgb)
+        print("  reference view %d: %.1f s" % (index, time.perf_counter() - start), flush=True)
+    return images
+
+
+def errors(images, references):
+    """RMSE, p99, max (1/255 units) and the fraction of values off by > 2/255."""
+    diff = np.concatenate([np.abs(i.astype(float) - np.rint(r)).ravel()
+                           for i, r in zip(images, references)])
+    return (float(np.sqrt(np.mean(diff ** 2))), float(np.percentile(diff, 99)),
+            float(diff.max()), float(np.mean(diff > 2.0)))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--scenes", default=",".join(
+        ["wavelet", "graded", "graded-spikes", "graded-opaque", "bluntfin", "loxpost"]))
+    parser.add_argument("--size", default="256x256")
+    parser.add_argument("--views", type=int, default=2)
+    parser.add_argument("--out", default="bench")
+    parser.add_argument("--methods", default="all",
+                        help="comma-separated method names or 'all'")
+    parser.add_argument("--wavelet-extent", type=int, default=16)
+    parser.add_argument("--timeout", type=int, default=900, help="seconds per method")
+    parser.add_argument("--scene", help=argparse.SUPPRESS)
+    parser.add_argument("--worker-method", help=argparse.SUPPRESS)
+    parser.add_argument("--worker-settings", help=argparse.SUPPRESS)
+    parser.add_argument("--worker-out", help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    args.width, args.height = (int(v) for v in args.size.lower().split("x"))
+    if args.worker_method:
+        return run_worker(args)
+
+    from ppiray_bench_report import write_reports
+
+    os.makedirs(args.out, exist_ok=True)
+    rows = []
+    for scene_name in args.scenes.split(","):
+        folder = os.path.join(args.out, scene_name)
+        os.makedirs(folder, exist_ok=True)
+        print("scene %s" % scene_name, flush=True)
+        references = reference_views(scene_name, args, folder)
+        for method, mode, settings in METHODS:
+            if args.methods != "all" and method not in args.methods.split(","):
+                continue
+            tag = (method + "_" + mode).replace(" ", "_").replace("^", "").replace("=", "")
+            tag = tag.replace("(", "").replace(")", "").replace("+", "_")
+            out = os.path.join(folder, tag)
+            os.makedirs(out, exist_ok=True)
+            command = [sys.executable, os.path.abspath(__file__), "--scene", scene_name,
+                       "--size", args.size, "--views", str(args.views),
+                       "--wavelet-extent", str(args.wavelet_extent),
+                       "--worker-method", method, "--worker-settings", json.dumps(settings),
+                       "--worker-out", out]
+            row = {"scene": scene_name, "method": method, "mode": mode, "ms_per_frame": "",
+                   "cells": "", "gpu_bytes": "", "rmse_255": "", "p99_255": "", "max_255": "",
+                   "frac_over_2": "", "status": "ok", "images": out}
+            try:
+                run = subprocess.run(command, capture_output=True, text=True,
+                                     timeout=args.timeout)
+                line = [l for l in run.stdout.splitlines() if l.startswith("RESULT ")]
+                if run.returncode != 0 or not line:
+                    tail = (run.stderr.strip().splitlines() or ["no output"])[-1][:120]
+                    row["status"] = "failed (exit %d): %s" % (run.returncode, tail)
+                else:
+                    result = json.loads(line[-1][len("RESULT "):])
+                    images = [np.load(os.path.join(out, "view%d.npy" % i))
+                              for i in range(args.views)]
+                    rmse, p99, worst, frac = errors(images, references)
+                    row.update({"ms_per_frame": "%.1f" % float(np.median(result["ms"])),
+                                "cells": result["cells"], "gpu_bytes": result["gpu_bytes"],
+                                "rmse_255": "%.3f" % rmse, "p99_255": "%.1f" % p99,
+                                "max_255": "%.0f" % worst, "frac_over_2": "%.4f" % frac})
+                    notes = []
+                    if "table_build_s" in result:
+                        notes.append("table built in %.3f s" % result["table_build_s"])
+                    if "resample_s" in result:
+                        notes.append("resample %.2f s" % result["resample_s"])
+                    row["notes"] = "; ".join(notes)
+            except subprocess.TimeoutExpired:
+                row["status"] = "timed out after %d s" % args.timeout
+            print("  %-40s %-45s %8s ms  rmse %6s  %s" % (
+                method, mode, row["ms_per_frame"], row["rmse_255"], row["status"]), flush=True)
+            rows.append(row)
+    write_reports(rows, args)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,127 @@
+"""Scenes of Module/run bench: a mesh, a volume property and a camera each.
+
+(a) wavelet        vtkRTAnalyticSource over [-E, E]^3, tetrahedralized (convex, smooth)
+(b) graded         Data/graded_holes.vtu: holes, edge lengths varying 100x, smooth TF
+(c) graded-spikes  the same mesh, 70 control points with one-value-wide spikes
+(d) graded-opaque  the same mesh, nearly opaque (tau D >> 1: Psi near gamma -> 1)
+(e) bluntfin       Blunt Fin (PLOT3D, Density), tetrahedralized: 187,395 tetrahedra
+    loxpost        LOX Post (PLOT3D, function 110 = pressure), tetrahedralized: 513,375
+"""
+import os
+
+from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkUnstructuredGrid
+from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
+from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
+from vtkmodules.vtkIOParallel import vtkMultiBlockPLOT3DReader
+from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkVolumeProperty
+
+from ppiray_scene import load, volume_property
+
+NAMES = ["wavelet", "graded", "graded-spikes", "graded-opaque", "bluntfin", "loxpost"]
+
+DERIVED = {
+    "wavelet": "RTData",
+    "graded": "s (analytic, see Data/make_graded_holes.py)",
+    "graded-spikes": "s",
+    "graded-opaque": "s",
+    "bluntfin": "Density",
+    "loxpost": "pressure (PLOT3D function 110)",
+}
+
+
+def _tetrahedralize(dataset):
+    tetra = vtkDataSetTriangleFilter()
+    tetra.SetInputData(dataset)
+    tetra.Update()
+    grid = vtkUnstructuredGrid()
+    grid.ShallowCopy(tetra.GetOutput())
+    return grid
+
+
+def _plot3d(folder, xyz, q, function):
+    reader = vtkMultiBlockPLOT3DReader()
+    reader.SetXYZFileName(os.path.join(folder, xyz))
+    reader.SetQFileName(os.path.join(folder, q))
+    reader.AutoDetectFormatOn()
+    if function is not None:
+        reader.SetScalarFunctionNumber(function)
+    reader.Update()
+    block = reader.GetOutput().GetBlock(0)
+    name = "Density" if function in (None, 100) else block.GetPointData().GetArrayName(
+        block.GetPointData().GetNumberOfArrays() - 1)
+    grid = _tetrahedralize(block)
+    grid.GetPointData().SetActiveScalars(name)
+    return grid
+
+
+def _spiky_property(lo, hi):
+    """70 control points: 10 colour nodes, 60 opacity nodes; 12 spikes, each
+    (hi - lo) / 200 wide, 0 -> 0.9 -> 0 over a faint ramp."""
+    color = vtkColorTransferFunction()
+    for i in range(10):
+        u = i / 9.0
+        color.AddRGBPoint(lo + u * (hi - lo), 0.2 + 0.8 * u, 0.9 - 0.7 * u * u, 1.0 - u)
+    opacity = vtkPiecewiseFunction()
+    width = (hi - lo) / 200.0
+    opacity.AddPoint(lo, 0.0)
+    for i in range(12):
+        centre = lo + (i + 1) * (hi - lo) / 13.0
+        opacity.AddPoint(centre - 2.0 * width, 0.02)
+        opacity.AddPoint(centre - 0.5 * width, 0.0)
+        opacity.AddPoint(centre, 0.9)
+        opacity.AddPoint(centre + 0.5 * width, 0.0)
+        opacity.AddPoint(centre + 2.0 * width, 0.02)
+    opacity.AddPoint(hi, 0.05)
+    prop = vtkVolumeProperty()
+    prop.SetColor(color)
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(0.05)
+    return prop
+
+
+def _opaque_property(lo, hi):
+    prop = volume_property_for_range(lo, hi)
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(lo, 0.0)
+    opacity.AddPoint(lo + 0.3 * (hi - lo), 1.0)
+    opacity.AddPoint(hi, 1.0)
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(0.002)  # tau D reaches ~100 in the coarse cells
+    return prop
+
+
+def volume_property_for_range(lo, hi):
+    color = vtkColorTransferFunction()
+    for u, rgb in ((0.0, (0.23, 0.30, 0.75)), (0.5, (0.87, 0.87, 0.87)), (1.0, (0.71, 0.02, 0.15))):
+        color.AddRGBPoint(lo + u * (hi - lo), *rgb)
+    prop = vtkVolumeProperty()
+    prop.SetColor(color)
+    return prop
+
+
+def build(name, root, data_root, wavelet_extent=16):
+    """(grid, vtkVolumeProperty) of scene `name`; None if its data is missing."""
+    if name == "wavelet":
+        source = vtkRTAnalyticSource()
+        e = wavelet_extent
+        source.SetWholeExtent(-e, e, -e, e, -e, e)
+        source.Update()
+        grid = _tetrahedralize(source.GetOutput())
+        return grid, volume_property(grid)
+    if name.startswith("graded"):
+        grid = load(os.path.join(root, "Data", "graded_holes.vtu"))
+        lo, hi = grid.GetPointData().GetScalars().GetRange()
+        if name == "graded-spikes":
+            return grid, _spiky_property(lo, hi)
+        if name == "graded-opaque":
+            return grid, _opaque_property(lo, hi)
+        return grid, volume_property(grid)
+    folder = {"bluntfin": "bluntfin", "loxpost": "lox_post"}[name]
+    path = os.path.join(data_root, folder)
+    if not os.path.isdir(path):
+        return None
+    if name == "bluntfin":
+        grid = _plot3d(path, "bluntfinxyz.bin", "bluntfinq.bin", None)
+    else:
+        grid = _plot3d(path, "postxyz.bin", "postq.bin", 110)
+    return grid, volume_property(grid)
