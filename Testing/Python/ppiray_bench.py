@@ -172,8 +172,7 @@ def errors(images, references):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--scenes", default=",".join(
-        ["wavelet", "graded", "graded-spikes", "graded-opaque", "bluntfin", "loxpost"]))
+    parser.add_argument("--scenes", default=",".join(NAMES_ORDER))
     parser.add_argument("--size", default="256x256")
     parser.add_argument("--views", type=int, default=2)
     parser.add_argument("--out", default="bench")
@@ -181,6 +180,8 @@ def main():
                         help="comma-separated method names or 'all'")
     parser.add_argument("--wavelet-extent", type=int, default=16)
     parser.add_argument("--timeout", type=int, default=900, help="seconds per method")
+    parser.add_argument("--merge", action="store_true",
+                        help="keep the rows of DIR/results.csv that this run does not redo")
     parser.add_argument("--scene", help=argparse.SUPPRESS)
     parser.add_argument("--worker-method", help=argparse.SUPPRESS)
     parser.add_argument("--worker-settings", help=argparse.SUPPRESS)
@@ -202,9 +203,7 @@ def main():
         for method, mode, settings in METHODS:
             if args.methods != "all" and method not in args.methods.split(","):
                 continue
-            tag = (method + "_" + mode).replace(" ", "_").replace("^", "").replace("=", "")
-            tag = tag.replace("(", "").replace(")", "").replace("+", "_")
-            out = os.path.join(folder, tag)
+            out = os.path.join(folder, tag_of(method, mode))
             os.makedirs(out, exist_ok=True)
             command = [sys.executable, os.path.abspath(__file__), "--scene", scene_name,
                        "--size", args.size, "--views", str(args.views),
@@ -241,8 +240,28 @@ def main():
             print("  %-40s %-45s %8s ms  rmse %6s  %s" % (
                 method, mode, row["ms_per_frame"], row["rmse_255"], row["status"]), flush=True)
             rows.append(row)
+    if args.merge and os.path.exists(os.path.join(args.out, "results.csv")):
+        redone = {(r["scene"], r["method"], r["mode"]) for r in rows}
+        with open(os.path.join(args.out, "results.csv")) as f:
+            kept = [r for r in csv.DictReader(f)
+                    if (r["scene"], r["method"], r["mode"]) not in redone]
+        for r in kept:
+            r["images"] = os.path.join(args.out, r["scene"], tag_of(r["method"], r["mode"]))
+        order = {(s, m, d): i for i, (s, (m, d, _)) in enumerate(
+            (s, x) for s in NAMES_ORDER for x in METHODS)}
+        rows = sorted(kept + rows, key=lambda r: order.get(
+            (r["scene"], r["method"], r["mode"]), len(order)))
     write_reports(rows, args)
     return 0
+
+
+NAMES_ORDER = ["wavelet", "graded", "graded-spikes", "graded-opaque", "bluntfin", "loxpost"]
+
+
+def tag_of(method, mode):
+    """Folder name of a method's images."""
+    tag = (method + "_" + mode).replace(" ", "_").replace("^", "").replace("=", "")
+    return tag.replace("(", "").replace(")", "").replace("+", "_")
 
 
 if __name__ == "__main__":

@@ -6,7 +6,9 @@ an extinction of -ln(1 - alpha) / unit, while VTK's unstructured mappers use
 alpha / unit: the opacity function is remapped to 1 - exp(-alpha) (sampled at
 512 points and every node) so that both describe the same medium. Points
 outside the mesh (vtkValidPointMask = 0) get a scalar below the range, which
-the clamped transfer function maps to its first (transparent) node.
+the clamped transfer function maps to its first (transparent) node. Sample
+distance: half the smallest grid spacing (VTK's default, 1 world unit, would
+step over whole scenes given in unit coordinates).
 """
 import time
 
@@ -57,6 +59,7 @@ def resampled_window(scene_name, args, dims, make_window):
     mapper = vtkOpenGLGPUVolumeRayCastMapper()
     mapper.SetInputData(image)
     mapper.AutoAdjustSampleDistancesOff()
+    mapper.SetSampleDistance(0.5 * min(image.GetSpacing()))
     volume = renderer.GetVolumes().GetLastProp()
     volume.SetMapper(mapper)
     volume.SetProperty(image_prop)
