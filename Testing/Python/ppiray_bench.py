@@ -245,8 +245,15 @@ def main():
         with open(os.path.join(args.out, "results.csv")) as f:
             kept = [r for r in csv.DictReader(f)
                     if (r["scene"], r["method"], r["mode"]) not in redone]
+        from ppiray_bench_report import notes_path
+
+        notes = {}
+        if os.path.exists(notes_path(args)):
+            with open(notes_path(args)) as f:
+                notes = json.load(f)
         for r in kept:
             r["images"] = os.path.join(args.out, r["scene"], tag_of(r["method"], r["mode"]))
+            r["notes"] = notes.get("|".join((r["scene"], r["method"], r["mode"])), "")
         order = {(s, m, d): i for i, (s, (m, d, _)) in enumerate(
             (s, x) for s in NAMES_ORDER for x in METHODS)}
         rows = sorted(kept + rows, key=lambda r: order.get(

@@ -22,7 +22,16 @@ def pareto_front(points):
     return sorted(front, key=lambda i: points[i][0])
 
 
+def notes_path(args):
+    return os.path.join(args.out, "results_notes.json")
+
+
 def write_reports(rows, args):
+    import json
+
+    with open(notes_path(args), "w") as f:
+        json.dump({"|".join((r["scene"], r["method"], r["mode"])): r.get("notes", "")
+                   for r in rows}, f, indent=0)
     with open(os.path.join(args.out, "results.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=COLUMNS, extrasaction="ignore")
         writer.writeheader()
@@ -35,12 +44,15 @@ def write_reports(rows, args):
                                                            args.out), ""]
     for scene in scenes:
         lines += ["## %s" % scene, "",
-                  "| method | mode | ms/frame | cells | GPU bytes | RMSE | p99 | max | >2/255 | "
-                  "status | notes |", "|---|---|---:|---:|---:|---:|---:|---:|---:|---|---|"]
+                  "| method | mode | ms/frame | cells | M cells/s | GPU bytes | RMSE | p99 | max | "
+                  ">2/255 | status | notes |",
+                  "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|"]
         for r in rows:
             if r["scene"] == scene:
-                lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-                    r["method"], r["mode"], r["ms_per_frame"], r["cells"], r["gpu_bytes"],
+                rate = ("%.2f" % (float(r["cells"]) / float(r["ms_per_frame"]) / 1000.0)
+                        if r["ms_per_frame"] and r["cells"] else "")
+                lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+                    r["method"], r["mode"], r["ms_per_frame"], r["cells"], rate, r["gpu_bytes"],
                     r["rmse_255"], r["p99_255"], r["max_255"], r["frac_over_2"], r["status"],
                     r.get("notes", "")))
         lines.append("")
