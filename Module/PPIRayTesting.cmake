@@ -1,19 +1,20 @@
 # ppiray_add_cxx_tests(<driver>
 #   TESTS <name>...            one <name>.cxx each, int <name>(int, char*[])
 #   LIBRARIES <target>...
-#   [BASELINE_DIR <dir>])      baselines: <dir>/<name>.png (passed with -V)
+#   [BASELINE_DIR <dir>]       baselines: <dir>/<name>.png (passed with -V)
+#   [SOURCES <file>...])       helpers compiled into the driver
 #
 # One executable per module (create_test_sourcelist), one ctest test per
 # function, run with VTK's regression-test arguments: -D <data root>
 # -T <temporary dir> -V <baseline>. Tests name what they check in the code.
 function (ppiray_add_cxx_tests driver)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "BASELINE_DIR" "TESTS;LIBRARIES")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "BASELINE_DIR" "TESTS;LIBRARIES;SOURCES")
   set(sources)
   foreach (test IN LISTS arg_TESTS)
     list(APPEND sources "${test}.cxx")
   endforeach ()
   create_test_sourcelist(driver_sources "${driver}.cxx" ${sources})
-  add_executable("${driver}" ${driver_sources})
+  add_executable("${driver}" ${driver_sources} ${arg_SOURCES})
   target_link_libraries("${driver}" PRIVATE ${arg_LIBRARIES})
   set(temporary "${CMAKE_BINARY_DIR}/Testing/Temporary")
   file(MAKE_DIRECTORY "${temporary}")

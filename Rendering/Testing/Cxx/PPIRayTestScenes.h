@@ -4,6 +4,7 @@
 #ifndef PPIRayTestScenes_h
 #define PPIRayTestScenes_h
 
+#include "PPIRayTestDisplay.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkColorTransferFunction.h"
@@ -147,6 +148,10 @@ struct Scene
   vtkNew<vtkVolumeProperty> Property;
   Scene(int width = 300, int height = 300)
   {
+    if (void* display = SharedDisplay())
+    {
+      this->Window->SetDisplayId(display);
+    }
     this->Window->SetMultiSamples(0);
     this->Window->SetSize(width, height);
     this->Window->AddRenderer(this->Renderer);
