@@ -4,7 +4,9 @@
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
+#include "vtkCellType.h"
 #include "vtkFloatArray.h"
+#include "vtkGenericCell.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -224,6 +226,199 @@ bool ClipRay(const Tetrahedron& tet, const Vec3& origin, const Vec3& direction, 
   return true;
 }
 
+Vec3 Cross(const Vec3& a, const Vec3& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+
+double Dot(const Vec3& a, const Vec3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// Ray parameters t where origin + t direction crosses a cell face: a triangle
+// (Moller-Trumbore), or a quadrilateral as the bilinear patch
+// P(u, v) = (1-u)(1-v) p0 + u (1-v) p1 + u v p2 + (1-u) v p3 that the cell's
+// interpolation spans (planar or not): with n1, n2 orthogonal to the ray,
+// A(u, v) = (P - o) . n1 = 0 and B(u, v) = (P - o) . n2 = 0 are bilinear;
+// eliminating u leaves a quadratic in v.
+void FaceCrossings(const std::vector<Vec3>& p, const Vec3& o, const Vec3& d, std::vector<double>& ts)
+{
+  const double eps = 1e-12;
+  auto sub = [](const Vec3& a, const Vec3& b) { return Vec3{ a[0] - b[0], a[1] - b[1], a[2] - b[2] }; };
+  if (p.size() == 3)
+  {
+    const Vec3 e1 = sub(p[1], p[0]), e2 = sub(p[2], p[0]);
+    const Vec3 h = Cross(d, e2);
+    const double a = Dot(e1, h);
+    if (std::abs(a) < 1e-300)
+    {
+      return;
+    }
+    const Vec3 s = sub(o, p[0]);
+    const double u = Dot(s, h) / a;
+    const Vec3 q = Cross(s, e1);
+    const double v = Dot(d, q) / a;
+    if (u >= -eps && v >= -eps && u + v <= 1 + eps)
+    {
+      ts.push_back(Dot(e2, q) / a);
+    }
+    return;
+  }
+  // Two unit vectors orthogonal to d.
+  const Vec3 axis = std::abs(d[0]) < 0.6 ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 };
+  Vec3 n1 = Cross(d, axis);
+  const double l1 = std::sqrt(Dot(n1, n1));
+  for (double& x : n1)
+  {
+    x /= l1;
+  }
+  const Vec3 n2 = Cross(d, n1);
+  double a[4], b[4];
+  for (int i = 0; i < 4; ++i)
+  {
+    const Vec3 r = sub(p[i], o);
+    a[i] = Dot(r, n1);
+    b[i] = Dot(r, n2);
+  }
+  // A = A0 + Au u + Av v + Auv u v, likewise B.
+  const double A0 = a[0], Au = a[1] - a[0], Av = a[3] - a[0], Auv = a[0] - a[1] + a[2] - a[3];
+  const double B0 = b[0], Bu = b[1] - b[0], Bv = b[3] - b[0], Buv = b[0] - b[1] + b[2] - b[3];
+  const double c2 = Bv * Auv - Av * Buv;
+  const double c1 = B0 * Auv + Bv * Au - A0 * Buv - Av * Bu;
+  const double c0 = B0 * Au - A0 * Bu;
+  double roots[2];
+  int count = 0;
+  const double scale = std::max({ std::abs(c0), std::abs(c1), std::abs(c2), 1e-300 });
+  if (std::abs(c2) < 1e-12 * scale)
+  {
+    if (std::abs(c1) > 1e-300)
+    {
+      roots[count++] = -c0 / c1;
+    }
+  }
+  else
+  {
+    const double disc = c1 * c1 - 4 * c2 * c0;
+    if (disc >= 0)
+    {
+      // Stable quadratic roots.
+      const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+      roots[count++] = q / c2;
+      if (q != 0)
+      {
+        roots[count++] = c0 / q;
+      }
+    }
+  }
+  for (int k = 0; k < count; ++k)
+  {
+    const double v = roots[k];
+    if (v < -eps || v > 1 + eps)
+    {
+      continue;
+    }
+    const double da = Au + Auv * v, db = Bu + Buv * v;
+    const double u = std::abs(da) > std::abs(db) ? -(A0 + Av * v) / da : -(B0 + Bv * v) / db;
+    if (!(u >= -eps && u <= 1 + eps))
+    {
+      continue;
+    }
+    Vec3 point;
+    for (int i = 0; i < 3; ++i)
+    {
+      point[i] = (1 - u) * (1 - v) * p[0][i] + u * (1 - v) * p[1][i] + u * v * p[2][i] +
+        (1 - u) * v * p[3][i];
+    }
+    ts.push_back(Dot(sub(point, o), d));
+  }
+}
+
+// The pieces of the ray inside a hexahedron, voxel, wedge or pyramid, with the
+// cell's own (isoparametric) interpolation: the ray's crossings with every
+// face (FaceCrossings) cut it into intervals, an interval whose midpoint is
+// inside the cell (parametric distance 0) is inside; each inside interval is
+// split until the interpolated scalar is linear along the ray within
+// `tolerance` at its quarter points and midpoint, and every piece is then
+// integrated exactly like a tetrahedron's. `cellId` >= 0 selects cell scalars.
+void GeneralCellSegments(vtkGenericCell* cell, vtkDataArray* scalars, vtkIdType cellId,
+  const Vec3& origin, const Vec3& direction, const Vec3& centre, double tolerance,
+  std::vector<Segment>& out)
+{
+  const int n = static_cast<int>(cell->GetNumberOfPoints());
+  std::vector<double> weights(std::max(n, 8)), values(n);
+  for (int v = 0; v < n; ++v)
+  {
+    values[v] = cellId >= 0 ? scalars->GetComponent(cellId, 0)
+                            : scalars->GetComponent(cell->GetPointId(v), 0);
+  }
+  std::vector<double> ts = { 0.0 };
+  std::vector<Vec3> corners;
+  for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
+  {
+    vtkCell* face = cell->GetFace(f);
+    const int m = static_cast<int>(face->GetNumberOfPoints());
+    corners.resize(m);
+    for (int k = 0; k < m; ++k)
+    {
+      double x[3];
+      face->GetPoints()->GetPoint(k, x);
+      corners[k] = { x[0] - centre[0], x[1] - centre[1], x[2] - centre[2] };
+    }
+    if (face->GetCellType() == VTK_PIXEL)
+    {
+      std::swap(corners[2], corners[3]); // pixel order to cyclic order
+    }
+    FaceCrossings(corners, origin, direction, ts);
+  }
+  std::sort(ts.begin(), ts.end());
+  auto evaluate = [&](double t, double& s) {
+    double x[3], pcoords[3], dist2;
+    int subId;
+    for (int i = 0; i < 3; ++i)
+    {
+      x[i] = origin[i] + t * direction[i] + centre[i];
+    }
+    const int found = cell->EvaluatePosition(x, nullptr, subId, pcoords, dist2, weights.data());
+    s = 0.0;
+    for (int v = 0; v < n; ++v)
+    {
+      s += weights[v] * values[v];
+    }
+    // EvaluatePosition itself accepts 1e-3 outside the parametric domain.
+    return found != -1 && cell->GetParametricDistance(pcoords) <= 1e-9;
+  };
+  auto linearize = [&](auto&& self, double a, double sa, double b, double sb, int depth) -> void {
+    double sq1, sm, sq3;
+    const double m = 0.5 * (a + b);
+    evaluate(m, sm);
+    evaluate(0.5 * (a + m), sq1);
+    evaluate(0.5 * (m + b), sq3);
+    const double deviation = std::max({ std::abs(sm - 0.5 * (sa + sb)),
+      std::abs(sq1 - 0.75 * sa - 0.25 * sb), std::abs(sq3 - 0.25 * sa - 0.75 * sb) });
+    if (depth >= 24 || deviation <= tolerance)
+    {
+      out.push_back({ a, m, sa, sm });
+      out.push_back({ m, b, sm, sb });
+      return;
+    }
+    self(self, a, sa, m, sm, depth + 1);
+    self(self, m, sm, b, sb, depth + 1);
+  };
+  for (size_t k = 0; k + 1 < ts.size(); ++k)
+  {
+    const double a = std::max(ts[k], 0.0), b = ts[k + 1];
+    double s;
+    if (b > a && evaluate(0.5 * (a + b), s))
+    {
+      double sa, sb;
+      evaluate(a, sa);
+      evaluate(b, sb);
+      linearize(linearize, a, sa, b, sb, 0);
+    }
+  }
+}
+
 // Front-to-back composite of the sorted, de-overlapped segments, each split
 // at every transfer-function break and integrated in closed form.
 void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf, float rgba[4])
@@ -367,11 +562,42 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
 
   std::vector<vtkIdType> tets, cellIds, unsupported;
   vtkUnstructuredGridCellAdjacency::ExtractTetrahedra(input, tets, cellIds, unsupported);
+  const vtkIdType numberOfTets = static_cast<vtkIdType>(cellIds.size());
+  // Hexahedra, voxels, wedges and pyramids take the general path; their
+  // points in CSR form.
+  std::vector<vtkIdType> generalCells, generalOffsets = { 0 }, generalPoints;
+  vtkIdType skipped = 0;
   if (!unsupported.empty())
   {
-    vtkWarningMacro("Only tetrahedra are rendered; other cells skipped.");
+    for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
+    {
+      const int type = input->GetCellType(c);
+      if (type == VTK_TETRA)
+      {
+        continue;
+      }
+      if (type != VTK_HEXAHEDRON && type != VTK_VOXEL && type != VTK_WEDGE && type != VTK_PYRAMID)
+      {
+        ++skipped;
+        continue;
+      }
+      vtkIdType npts;
+      const vtkIdType* pts;
+      input->GetCellPoints(c, npts, pts);
+      generalCells.push_back(c);
+      generalPoints.insert(generalPoints.end(), pts, pts + npts);
+      generalOffsets.push_back(static_cast<vtkIdType>(generalPoints.size()));
+    }
   }
-  const vtkIdType numberOfTets = static_cast<vtkIdType>(cellIds.size());
+  if (skipped)
+  {
+    vtkWarningMacro(<< skipped << " cells of other types than linear 3D cells skipped.");
+  }
+  const vtkIdType numberOfItems = numberOfTets + static_cast<vtkIdType>(generalCells.size());
+  double scalarRange[2];
+  scalars->GetRange(scalarRange, 0);
+  const double linearTolerance =
+    this->QuadratureTolerance * std::max(scalarRange[1] - scalarRange[0], 1e-300);
 
   TransferFunction tf;
   tf.Build(this->VolumeProperty, this->CurvedSegmentSubdivisions);
@@ -409,11 +635,18 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
   // Bin tetrahedra into 16 x 16 pixel tiles by their projected bounding box.
   constexpr int TileSize = 16;
   const int tilesX = (width + TileSize - 1) / TileSize, tilesY = (height + TileSize - 1) / TileSize;
+  // Tile range of item t: tetrahedron t, or general cell t - numberOfTets.
   auto tileRange = [&](vtkIdType t, int range[4]) {
     double lo[2] = { 1e300, 1e300 }, hi[2] = { -1e300, -1e300 };
-    for (int v = 0; v < 4; ++v)
+    const vtkIdType* itemPoints = t < numberOfTets
+      ? tets.data() + 4 * t
+      : generalPoints.data() + generalOffsets[t - numberOfTets];
+    const vtkIdType itemSize = t < numberOfTets
+      ? 4
+      : generalOffsets[t - numberOfTets + 1] - generalOffsets[t - numberOfTets];
+    for (vtkIdType v = 0; v < itemSize; ++v)
     {
-      const vtkIdType p = tets[4 * t + v];
+      const vtkIdType p = itemPoints[v];
       if (behind[p])
       {
         range[0] = range[2] = 0;
@@ -441,7 +674,7 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
     }
   };
   std::vector<vtkIdType> tileOffsets(static_cast<size_t>(tilesX) * tilesY + 1, 0);
-  for (vtkIdType t = 0; t < numberOfTets; ++t)
+  for (vtkIdType t = 0; t < numberOfItems; ++t)
   {
     int r[4];
     tileRange(t, r);
@@ -460,7 +693,7 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
   std::vector<vtkIdType> tileTets(tileOffsets.back());
   {
     std::vector<vtkIdType> fill(tileOffsets.begin(), tileOffsets.end() - 1);
-    for (vtkIdType t = 0; t < numberOfTets; ++t)
+    for (vtkIdType t = 0; t < numberOfItems; ++t)
     {
       int r[4];
       tileRange(t, r);
@@ -481,9 +714,16 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
   {
     const int tx = tile % tilesX, ty = tile / tilesX;
     std::vector<Tetrahedron> local;
+    std::vector<vtkIdType> localGeneral;
+    vtkNew<vtkGenericCell> cell;
     for (vtkIdType k = tileOffsets[tile]; k < tileOffsets[tile + 1]; ++k)
     {
       const vtkIdType t = tileTets[k];
+      if (t >= numberOfTets)
+      {
+        localGeneral.push_back(generalCells[t - numberOfTets]);
+        continue;
+      }
       double p[4][3];
       Tetrahedron tet;
       for (int v = 0; v < 4; ++v)
@@ -537,6 +777,12 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
             segments.push_back(seg);
           }
         }
+        for (vtkIdType c : localGeneral)
+        {
+          input->GetCell(c, cell);
+          GeneralCellSegments(cell, scalars, cellScalars ? c : -1, origin, direction, centre,
+            linearTolerance, segments);
+        }
         IntegrateRay(segments, tf, out + 4 * (static_cast<size_t>(py) * width + px));
       }
     }
@@ -550,6 +796,7 @@ void vtkUnstructuredGridReferenceRenderer::PrintSelf(ostream& os, vtkIndent inde
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ImageSize: " << this->ImageSize[0] << " x " << this->ImageSize[1] << "\n";
   os << indent << "CurvedSegmentSubdivisions: " << this->CurvedSegmentSubdivisions << "\n";
+  os << indent << "QuadratureTolerance: " << this->QuadratureTolerance << "\n";
   os << indent << "VolumeProperty: " << this->VolumeProperty << "\n";
   os << indent << "Camera: " << this->Camera << "\n";
 }

@@ -21,9 +21,16 @@
  * Independent of the GPU path by construction (no shared traversal, transfer
  * function or integration code), so that each checks the other.
  *
+ * Hexahedra, voxels, wedges and pyramids take a general path with the cell's
+ * own (isoparametric) interpolation: the ray is cut at its crossings with
+ * every face (triangles, and quadrilaterals as the bilinear patches the
+ * interpolation spans, planar or not), the inside intervals are split until
+ * the interpolated scalar is linear along the ray within QuadratureTolerance
+ * (relative to the scalar range), and each piece is integrated exactly.
+ * Other cell types are skipped with a warning.
+ *
  * Scalars: SetInputArrayToProcess(0, 0, 0, association, name); default the
  * active point scalars, else the active cell scalars; first component.
- * Other cell types than tetrahedra are skipped with a warning.
  */
 #ifndef vtkUnstructuredGridReferenceRenderer_h
 #define vtkUnstructuredGridReferenceRenderer_h
@@ -65,6 +72,15 @@ public:
   vtkGetMacro(CurvedSegmentSubdivisions, int);
   ///@}
 
+  ///@{
+  /**
+   * Largest deviation of the scalar from linear along a ray piece in a
+   * non-tetrahedral cell, relative to the scalar range (default 1e-6).
+   */
+  vtkSetClampMacro(QuadratureTolerance, double, 1e-12, 0.1);
+  vtkGetMacro(QuadratureTolerance, double);
+  ///@}
+
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -79,6 +95,7 @@ protected:
   vtkCamera* Camera = nullptr;
   int ImageSize[2] = { 256, 256 };
   int CurvedSegmentSubdivisions = 64;
+  double QuadratureTolerance = 1e-6;
 
 private:
   vtkUnstructuredGridReferenceRenderer(const vtkUnstructuredGridReferenceRenderer&) = delete;
