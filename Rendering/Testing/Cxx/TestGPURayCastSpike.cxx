@@ -2,7 +2,7 @@
 // opacity spike (0 -> 1 -> 0 over one scalar unit of a 0..100 range) that
 // no sampling-based mapper can be relied on to hit: baseline image, and 144
 // pixels checked against an exact per-ray CPU integration split at every
-// control point (PPIRayReferenceRay.h).
+// control point (vtkUnstructuredGridReferenceRenderer, via PPIRayPixelCheck.h).
 
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
