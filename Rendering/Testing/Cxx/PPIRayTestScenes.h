@@ -18,6 +18,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
+#include "vtkUnstructuredGridVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
 #include <array>
@@ -158,6 +159,18 @@ struct Scene
     this->Renderer->SetBackground(0.0, 0.0, 0.0);
     this->Volume->SetProperty(this->Property);
     this->Renderer->AddVolume(this->Volume);
+  }
+
+  // Show `grid` with `mapper`, the camera at `eye` looking at `focal`, then
+  // fit to the volume (not rendered yet).
+  void Show(vtkAbstractVolumeMapper* mapper, vtkDataSet* grid, const std::array<double, 3>& eye,
+    const std::array<double, 3>& focal)
+  {
+    vtkUnstructuredGridVolumeMapper::SafeDownCast(mapper)->SetInputData(grid);
+    this->Volume->SetMapper(mapper);
+    this->Renderer->GetActiveCamera()->SetPosition(eye.data());
+    this->Renderer->GetActiveCamera()->SetFocalPoint(focal.data());
+    this->Renderer->ResetCamera();
   }
 };
 }

@@ -19,11 +19,7 @@ int TestGPURayCastCaches(int, char*[])
   ppiray_test::Scene scene(120, 120);
   ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-  mapper->SetInputData(grid);
-  scene.Volume->SetMapper(mapper);
-  scene.Renderer->GetActiveCamera()->SetPosition(2.2, 1.4, 2.6);
-  scene.Renderer->GetActiveCamera()->SetFocalPoint(0.5, 0.5, 0.5);
-  scene.Renderer->ResetCamera();
+  scene.Show(mapper, grid, { 2.2, 1.4, 2.6 }, { 0.5, 0.5, 0.5 });
 
   int errors = 0;
   auto expect = [&](int geometry, int field, int tf, const char* step) {

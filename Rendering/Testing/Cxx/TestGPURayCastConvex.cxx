@@ -16,11 +16,7 @@ int TestGPURayCastConvex(int argc, char* argv[])
   ppiray_test::Scene scene;
   ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-  mapper->SetInputData(grid);
-  scene.Volume->SetMapper(mapper);
-  scene.Renderer->GetActiveCamera()->SetPosition(2.2, 1.4, 2.6);
-  scene.Renderer->GetActiveCamera()->SetFocalPoint(0.5, 0.5, 0.5);
-  scene.Renderer->ResetCamera();
+  scene.Show(mapper, grid, { 2.2, 1.4, 2.6 }, { 0.5, 0.5, 0.5 });
   scene.Window->Render();
 
   int errors = 0;

@@ -46,11 +46,7 @@ int TestGPURayCastIntegrationModes(int, char*[])
       ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
     }
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-    mapper->SetInputData(grid);
-    scene.Volume->SetMapper(mapper);
-    scene.Renderer->GetActiveCamera()->SetPosition(2.0, 1.5, 2.5);
-    scene.Renderer->GetActiveCamera()->SetFocalPoint(0.5, 0.5, 0.5);
-    scene.Renderer->ResetCamera();
+    scene.Show(mapper, grid, { 2.0, 1.5, 2.5 }, { 0.5, 0.5, 0.5 });
     scene.Window->Render();
 
     const auto exact = ppiray_test::ReferenceRGB(

@@ -22,11 +22,7 @@ int TestGPURayCastSpike(int argc, char* argv[])
   ppiray_test::SpikeTransferFunction(scene.Property);
 
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-  mapper->SetInputData(grid);
-  scene.Volume->SetMapper(mapper);
-  scene.Renderer->GetActiveCamera()->SetPosition(2.0, 1.5, 2.5);
-  scene.Renderer->GetActiveCamera()->SetFocalPoint(0.5, 0.5, 0.5);
-  scene.Renderer->ResetCamera();
+  scene.Show(mapper, grid, { 2.0, 1.5, 2.5 }, { 0.5, 0.5, 0.5 });
   scene.Window->Render();
 
   int errors = 0;

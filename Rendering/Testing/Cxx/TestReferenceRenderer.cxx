@@ -34,11 +34,7 @@ Comparison CompareAll(vtkUnstructuredGrid* grid, const std::function<void(vtkVol
   auto render = [&](vtkUnstructuredGridVolumeMapper* mapper) {
     ppiray_test::Scene scene(Size, Size);
     tf(scene.Property);
-    mapper->SetInputData(grid);
-    scene.Volume->SetMapper(mapper);
-    scene.Renderer->GetActiveCamera()->SetPosition(2.0, 1.5, 2.5);
-    scene.Renderer->GetActiveCamera()->SetFocalPoint(0.5, 0.5, 0.5);
-    scene.Renderer->ResetCamera();
+    scene.Show(mapper, grid, { 2.0, 1.5, 2.5 }, { 0.5, 0.5, 0.5 });
     scene.Window->Render();
     if (reference.empty())
     {
