@@ -11,13 +11,11 @@ s = exp(-((y-0.5)^2 + (z-0.5)^2) / 0.08) + 0.5 tanh((x - 0.05) / 0.01).
 Run with VTK's Python: Module/run python Data/make_graded_holes.py
 """
 import math
-import os
 
 from vtkmodules.vtkCommonCore import vtkDoubleArray
 from vtkmodules.vtkCommonDataModel import vtkImplicitBoolean, vtkRectilinearGrid, vtkSphere
-from vtkmodules.vtkFiltersExtraction import vtkExtractGeometry
-from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
+
+from carve import carve_and_write
 
 
 def geometric(first, last, total):
@@ -67,17 +65,6 @@ for centre, radius in (((0.3, 0.5, 0.5), 0.18), ((0.7, 0.25, 0.7), 0.15), ((0.6,
     ball.SetCenter(centre)
     ball.SetRadius(radius)
     holes.AddFunction(ball)
-outside = vtkExtractGeometry()
-outside.SetInputData(grid)
-outside.SetImplicitFunction(holes)
-outside.ExtractInsideOff()
-tetrahedralize = vtkDataSetTriangleFilter()
-tetrahedralize.SetInputConnection(outside.GetOutputPort())
-writer = vtkXMLUnstructuredGridWriter()
-writer.SetInputConnection(tetrahedralize.GetOutputPort())
-writer.SetFileName(os.path.join(os.path.dirname(os.path.abspath(__file__)), "graded_holes.vtu"))
-writer.SetDataModeToAppended()
-writer.SetCompressorTypeToZLib()
-writer.Write()
-print(writer.GetFileName(), tetrahedralize.GetOutput().GetNumberOfCells(), "tetrahedra,",
-      len(x) - 1, "x", len(y) - 1, "x", len(y) - 1, "voxels before the holes")
+path, tets = carve_and_write(grid, holes, "graded_holes.vtu")
+print(path, tets, "tetrahedra,", len(x) - 1, "x", len(y) - 1, "x", len(y) - 1,
+      "voxels before the holes")

@@ -136,6 +136,7 @@ def run_worker(args):
 def reference_views(scene_name, args, folder):
     """The exact images of every view, cached as .npy in `folder`."""
     import ppiray
+    from vtkmodules.util.numpy_support import vtk_to_numpy
 
     paths = [os.path.join(folder, "reference_view%d.npy" % i) for i in range(args.views)]
     if all(os.path.exists(p) for p in paths):
@@ -152,8 +153,6 @@ def reference_views(scene_name, args, folder):
         reference.SetImageSize(args.width, args.height)
         start = time.perf_counter()
         reference.Update()
-        from vtkmodules.util.numpy_support import vtk_to_numpy
-
         rgba = vtk_to_numpy(reference.GetOutput().GetPointData().GetScalars())
         rgb = np.clip(255.0 * rgba[:, :3], 0, 255).reshape(args.height, args.width, 3)
         np.save(paths[index], rgb)
