@@ -65,7 +65,9 @@ public:
   int FieldCellFlag = -1;
   vtkTimeStamp FieldTime;
   vtkVolumeProperty* Property = nullptr;
-  vtkTimeStamp TransferFunctionTime;
+  vtkTimeStamp TransferFunctionCheckTime; // when the property was last looked at
+  vtkTimeStamp TransferFunctionTime;      // when its control points last changed
+  std::vector<float> TransferFunctionTexels;
 
   // GPU copies: valid while the flag is set.
   bool GeometryOnGPU = false;
@@ -415,17 +417,28 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateField(vtkUnstructuredGridBase* i
 bool vtkUnstructuredGridGPURayCastMapper::UpdateTransferFunction(vtkVolumeProperty* property)
 {
   vtkInternals& in = *this->Internals;
-  if (in.Property == property && property->GetMTime() <= in.TransferFunctionTime.GetMTime())
+  if (in.Property == property && property->GetMTime() <= in.TransferFunctionCheckTime.GetMTime())
   {
     return in.ControlPoints->GetNumberOfControlPoints() > 0;
   }
   in.Property = property;
-  in.TransferFunctionTime.Modified();
-  in.TransferFunctionOnGPU = false;
+  in.TransferFunctionCheckTime.Modified();
   if (!in.ControlPoints->Build(property, 0))
   {
+    in.TransferFunctionTexels.clear();
+    in.TransferFunctionTime.Modified();
+    in.TransferFunctionOnGPU = false;
     vtkErrorMacro("The volume property has no scalar opacity function.");
     return false;
+  }
+  // A property can be Modified() without a new transfer function (ParaView
+  // touches its lookup tables while rendering): only new control points count.
+  std::vector<float> texels = in.ControlPoints->GetTexels();
+  if (texels != in.TransferFunctionTexels)
+  {
+    in.TransferFunctionTexels = std::move(texels);
+    in.TransferFunctionTime.Modified();
+    in.TransferFunctionOnGPU = false;
   }
   return true;
 }
@@ -468,7 +481,7 @@ bool vtkUnstructuredGridGPURayCastMapper::UploadToGPU(vtkOpenGLRenderWindow* con
   }
   if (!in.TransferFunctionOnGPU)
   {
-    const std::vector<float> texels = in.ControlPoints->GetTexels();
+    const std::vector<float>& texels = in.TransferFunctionTexels;
     if (!in.ControlPointTexels.Upload(context, texels.data(), texels.size() / 4, 4, VTK_FLOAT))
     {
       vtkErrorMacro("Could not upload the transfer function to the GPU.");

@@ -1,6 +1,7 @@
 // Each cache is rebuilt for its own reason only (counted by the mapper):
 // a transfer function edit re-uploads the control points but neither the
-// geometry nor the field; a scalar edit re-uploads the field only; moving a
+// geometry nor the field, and a property Modified() without new control
+// points re-uploads nothing; a scalar edit re-uploads the field only; moving a
 // point re-uploads the geometry. The image follows each edit, and
 // GetGPUMemorySize() accounts for 96 bytes per tetrahedron plus the rest.
 
@@ -41,6 +42,13 @@ int TestGPURayCastCaches(int, char*[])
   scene.Renderer->GetActiveCamera()->Azimuth(30);
   scene.Window->Render();
   expect(1, 1, 1, "camera move");
+
+  // Modified() without a new transfer function (what ParaView does to its
+  // lookup tables while rendering) uploads nothing.
+  scene.Property->GetRGBTransferFunction()->Modified();
+  scene.Property->Modified();
+  scene.Window->Render();
+  expect(1, 1, 1, "property touched, unchanged");
 
   scene.Property->GetScalarOpacity()->AddPoint(0.65, 0.9);
   scene.Window->Render();

@@ -1,0 +1,73 @@
+/**
+ * @class   vtkPPIRayVolumeRepresentation
+ * @brief   ParaView's unstructured-grid volume representation, rendered by
+ *          vtkUnstructuredGridGPURayCastMapper ("PPIRay Volume")
+ *
+ * Everything a ParaView volume representation does is inherited from
+ * vtkUnstructuredGridVolumeRepresentation: the colour and opacity transfer
+ * functions and their scalar range, Scalar Opacity Unit Distance, block
+ * selection, the translucent-surface LOD for interaction, and in parallel the
+ * request for ordered compositing (the view redistributes the data into
+ * visibility-sortable pieces; each rank ray casts its piece and IceT
+ * composites them in order). The only volume mapper is PPIRay's: the
+ * inherited mapper selection is ignored.
+ *
+ * Input: unstructured grids and any dataset or composite dataset (the
+ * representation's preprocessor merges blocks and tetrahedralizes).
+ *
+ * The mapper's settings are forwarded without touching the pipeline, so a
+ * change re-renders without re-uploading geometry or scalars (the mapper's
+ * caches and upload counters are reachable through GetPPIRayMapper()).
+ */
+#ifndef vtkPPIRayVolumeRepresentation_h
+#define vtkPPIRayVolumeRepresentation_h
+
+#include "ppirayParaViewModule.h" // for export macro
+#include "vtkUnstructuredGridVolumeRepresentation.h"
+
+class vtkUnstructuredGridGPURayCastMapper;
+
+class PPIRAYPARAVIEW_EXPORT vtkPPIRayVolumeRepresentation
+  : public vtkUnstructuredGridVolumeRepresentation
+{
+public:
+  static vtkPPIRayVolumeRepresentation* New();
+  vtkTypeMacro(vtkPPIRayVolumeRepresentation, vtkUnstructuredGridVolumeRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The mapper is always PPIRay's; other names are ignored (with a debug
+   * message) so that a shared "SelectMapper" property cannot switch it.
+   */
+  void SetActiveVolumeMapper(const char* name) override;
+
+  ///@{
+  /** Forwarded to vtkUnstructuredGridGPURayCastMapper. */
+  void SetIntegrationMode(int mode);
+  void SetMaximumNumberOfPeels(int peels);
+  void SetPsiTableSize(int size);
+  void SetPreIntegrationTableSize(int size);
+  void SetTerminationOpacity(double opacity);
+  ///@}
+
+  /** The mapper (for its counters, GPU memory size and peel count). */
+  vtkUnstructuredGridGPURayCastMapper* GetPPIRayMapper();
+
+  int ProcessViewRequest(vtkInformationRequestKey* request, vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
+
+protected:
+  vtkPPIRayVolumeRepresentation();
+  ~vtkPPIRayVolumeRepresentation() override;
+
+  /** Unstructured grids, any other dataset, composite datasets. */
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+private:
+  vtkPPIRayVolumeRepresentation(const vtkPPIRayVolumeRepresentation&) = delete;
+  void operator=(const vtkPPIRayVolumeRepresentation&) = delete;
+
+  vtkUnstructuredGridGPURayCastMapper* Mapper;
+};
+
+#endif

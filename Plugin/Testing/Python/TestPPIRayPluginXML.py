@@ -1,0 +1,93 @@
+"""pvbatch: the plugin's server-manager XML is valid and complete.
+
+- The XML parses, ParaView knows the proxy it defines, and "PPIRay Volume" is
+  offered for unstructured grids and for structured grids.
+- Every property the XML declares appears in the display's ListProperties()
+  and its default equals the mapper's own default (so the GUI starts where a
+  VTK user of the mapper starts).
+- Setting each one reaches the mapper.
+
+PLUGIN "auto": the plugin is not loaded by the script but must have been
+auto-loaded from PV_PLUGIN_PATH.
+
+Usage: pvbatch TestPPIRayPluginXML.py PLUGIN|auto XML
+"""
+import os
+import sys
+import xml.etree.ElementTree as ElementTree
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import ppiray_pvtest as pt  # noqa: E402
+
+from paraview import servermanager  # noqa: E402
+from paraview.simple import Hide, Render, Show, Tetrahedralize, Transform, Wavelet  # noqa: E402
+
+# A value different from the default for each property, and the mapper getter.
+NEW_VALUES = {
+    "IntegrationMode": ("Exact Linear", 1, "GetIntegrationMode"),
+    "MaximumNumberOfPeels": (7, 7, "GetMaximumNumberOfPeels"),
+    "PsiTableSize": (128, 128, "GetPsiTableSize"),
+    "PreIntegrationTableSize": (32, 32, "GetPreIntegrationTableSize"),
+    "TerminationOpacity": (0.95, 0.95, "GetTerminationOpacity"),
+}
+
+
+def declared_properties(xml_path):
+    """{name: default string} of the properties PPIRayVolumeRepresentation declares."""
+    root = ElementTree.parse(xml_path).getroot()
+    proxy = root.find("./ProxyGroup/RepresentationProxy[@name='PPIRayVolumeRepresentation']")
+    if proxy is None:
+        pt.fail("no PPIRayVolumeRepresentation in %s" % xml_path)
+    return {p.get("name"): p.get("default_values") for p in proxy
+            if p.tag.endswith("VectorProperty")}
+
+
+def main(plugin, xml_path):
+    if plugin != "auto":
+        pt.load_plugin(plugin)
+    failures = []
+    declared = declared_properties(xml_path)
+    if set(declared) != set(NEW_VALUES):
+        failures.append("declared properties %s; this test knows %s"
+                        % (sorted(declared), sorted(NEW_VALUES)))
+
+    definitions = servermanager.ProxyManager().GetProxyDefinitionManager()
+    if not definitions.HasDefinition("representations", "PPIRayVolumeRepresentation"):
+        failures.append("ParaView did not register PPIRayVolumeRepresentation")
+
+    view = pt.render_view((64, 64))
+    # Structured grids get the representation too (PLOT3D, curvilinear CFD):
+    # Transform turns the wavelet's image data into a vtkStructuredGrid.
+    curvilinear = Transform(Input=Wavelet(WholeExtent=[-2, 2, -2, 2, -2, 2]))
+    structured = Show(curvilinear, view)
+    if structured.GetXMLName() != "StructuredGridRepresentation":
+        failures.append("Transform(Wavelet) shown as %s" % structured.GetXMLName())
+    if pt.REPRESENTATION not in structured.GetProperty("Representation").Available:
+        failures.append("'%s' is not offered for structured grids" % pt.REPRESENTATION)
+    Hide(curvilinear, view)
+
+    display = pt.show_volume(Tetrahedralize(Input=Wavelet(WholeExtent=[-4, 4, -4, 4, -4, 4])),
+                             view, "RTData")
+    Render(view)
+    listed = set(display.ListProperties())
+    mapper = pt.mapper_of(display)
+    for name, default in sorted(declared.items()):
+        if name not in listed:
+            failures.append("%s is not in ListProperties()" % name)
+            continue
+        value, expected, getter = NEW_VALUES[name]
+        mapper_default = getattr(mapper, getter)()
+        if abs(float(default) - float(mapper_default)) > 1e-12:
+            failures.append("%s: XML default %s, mapper default %s" % (name, default, mapper_default))
+        display.SetPropertyWithName(name, value)
+        Render(view)
+        got = getattr(mapper, getter)()
+        if abs(got - expected) > 1e-9:
+            failures.append("%s = %r reached the mapper as %r" % (name, value, got))
+    pt.finish(failures)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        pt.fail("usage: " + __doc__.strip().splitlines()[-1])
+    main(*sys.argv[1:])

@@ -1,0 +1,108 @@
+"""pvbatch: the plugin's "PPIRay Volume" representation on a generated dataset.
+
+Wavelet -> Tetrahedralize (40,000 tetrahedra) shown as PPIRay Volume:
+ 1. the image matches its baseline; the mapper uploaded geometry, field and
+    transfer function once each;
+ 2. a new opacity function and a mapper property (IntegrationMode) between two
+    renders: the image matches the second baseline, the transfer function was
+    uploaded again, geometry and field were not;
+ 3. a mapper property alone (PsiTableSize): nothing re-uploaded;
+ 4. an interactive (LOD) render then a still render: the still image is the
+    full-quality one of step 2;
+ 5. an opaque slice and outline in the same view: matches the third baseline.
+
+Usage: pvbatch TestPPIRayRepresentation.py PLUGIN BASELINE_DIR TEMPORARY_DIR
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import ppiray_pvtest as pt  # noqa: E402
+
+from paraview.simple import Hide, Outline, Render, Show, Slice, Tetrahedralize, Wavelet  # noqa: E402
+
+
+def counts(mapper):
+    return (mapper.GetGeometryUploadCount(), mapper.GetFieldUploadCount(),
+            mapper.GetTransferFunctionUploadCount())
+
+
+def main(plugin, baselines, temporary):
+    pt.load_plugin(plugin)
+    failures = []
+
+    def check_image(view, name):
+        image = pt.screenshot(view, os.path.join(temporary, name + ".png"))
+        problem = pt.compare_with_baseline(image, os.path.join(baselines, name + ".png"), temporary)
+        if problem:
+            failures.append(problem)
+
+    wavelet = Wavelet(WholeExtent=[-10, 10, -10, 10, -10, 10])
+    tets = Tetrahedralize(Input=wavelet)
+    view = pt.render_view()
+    display = pt.show_volume(tets, view, "RTData")
+    if pt.REPRESENTATION not in display.GetProperty("Representation").Available:
+        pt.fail("'%s' is not offered for unstructured grids" % pt.REPRESENTATION)
+    pt.set_camera(view, (30.0, 20.0, 40.0))
+
+    # 1. First render.
+    check_image(view, "TestPPIRayRepresentation")
+    mapper = pt.mapper_of(display)
+    if mapper.GetNumberOfTetrahedra() != 5 * 20 ** 3:
+        failures.append("expected 40000 tetrahedra, got %d" % mapper.GetNumberOfTetrahedra())
+    first = counts(mapper)
+    if first != (1, 1, 1):
+        failures.append("first render uploaded (geometry, field, TF) = %s, expected (1, 1, 1)"
+                        % (first,))
+
+    # 2. Transfer function and a mapper property change.
+    display.ScalarOpacityFunction.Points = [40.0, 0.0, 0.5, 0.0, 150.0, 0.05, 0.5, 0.0,
+                                            200.0, 0.8, 0.5, 0.0, 260.0, 0.8, 0.5, 0.0]
+    display.IntegrationMode = "Average Color"
+    check_image(view, "TestPPIRayRepresentationChanged")
+    second = counts(mapper)
+    if mapper.GetIntegrationMode() != 3:
+        failures.append("IntegrationMode did not reach the mapper (%d)" % mapper.GetIntegrationMode())
+    if second[:2] != first[:2]:
+        failures.append("geometry/field re-uploaded after a transfer-function change: %s -> %s"
+                        % (first, second))
+    if second[2] != first[2] + 1:
+        failures.append("transfer function uploaded %d times after one change"
+                        % (second[2] - first[2]))
+
+    # 3. A mapper property alone.
+    display.PsiTableSize = 256
+    Render(view)
+    third = counts(mapper)
+    if mapper.GetPsiTableSize() != 256:
+        failures.append("PsiTableSize did not reach the mapper (%d)" % mapper.GetPsiTableSize())
+    if third != second:
+        failures.append("a mapper property re-uploaded cell data: %s -> %s" % (second, third))
+
+    # 4. Interactive render with LOD, then a still render at full quality.
+    view.LODThreshold = 0.0
+    view.SMProxy.InteractiveRender()
+    check_image(view, "TestPPIRayRepresentationChanged")
+    if counts(mapper)[:2] != first[:2]:
+        failures.append("an interactive render re-uploaded cell data: %s" % (counts(mapper),))
+
+    # 5. Opaque geometry in the same view.
+    display.IntegrationMode = "Partial Pre-Integration"
+    slice_ = Slice(Input=wavelet)
+    slice_.SliceType.Normal = [1.0, 0.0, 0.0]
+    slice_display = Show(slice_, view)
+    slice_display.SetRepresentationType("Surface")
+    slice_display.ColorArrayName = ["POINTS", ""]
+    slice_display.DiffuseColor = [0.85, 0.85, 0.85]
+    outline_display = Show(Outline(Input=wavelet), view)
+    outline_display.DiffuseColor = [1.0, 1.0, 1.0]
+    check_image(view, "TestPPIRayRepresentationOpaque")
+    Hide(slice_, view)
+
+    pt.finish(failures)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 4:
+        pt.fail("usage: " + __doc__.strip().splitlines()[-1])
+    main(*sys.argv[1:])

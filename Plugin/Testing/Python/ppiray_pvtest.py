@@ -1,0 +1,130 @@
+"""Shared by the plugin's pvbatch tests: load the plugin, a reproducible scene
+shown as "PPIRay Volume", and image checks.
+
+Scene: the wavelet (RTData) tetrahedralized, a blue-yellow-red colour map and a
+linear opacity ramp given explicitly (not rescaled from the data, so that every
+rank of a parallel run uses the same transfer function).
+"""
+import os
+
+from paraview import servermanager
+from paraview.simple import (
+    CreateView,
+    GetColorTransferFunction,
+    GetOpacityTransferFunction,
+    LoadPlugin,
+    Render,
+    SaveScreenshot,
+    Show,
+)
+
+REPRESENTATION = "PPIRay Volume"
+SKIP = 125  # ctest SKIP_RETURN_CODE
+RGB_POINTS = [40.0, 0.1, 0.1, 0.8, 150.0, 0.9, 0.9, 0.2, 260.0, 0.9, 0.1, 0.1]
+OPACITY_POINTS = [40.0, 0.0, 0.5, 0.0, 260.0, 0.5, 0.5, 0.0]
+
+
+def load_plugin(path):
+    """LoadPlugin on this process (in pvbatch --mpi every rank runs the
+    session, so the plugin is loaded where the representation lives)."""
+    if not os.path.exists(path):
+        fail("plugin not found: %s" % path)
+    LoadPlugin(path, remote=False, ns=globals())
+
+
+def fail(message):
+    """Stop the test. pvbatch 5.11 returns 1 on any exception but tears down
+    badly after sys.exit() (X errors while views are destroyed), so tests
+    raise instead of calling sys.exit()."""
+    print("FAILED:", message, flush=True)
+    raise RuntimeError(message)
+
+
+def finish(failures):
+    """Print the failures and raise if there are any (see fail())."""
+    for failure in failures:
+        print("FAILED:", failure, flush=True)
+    if failures:
+        raise RuntimeError("%d check(s) failed" % len(failures))
+
+
+def render_view(size=(300, 300)):
+    view = CreateView("RenderView")
+    view.ViewSize = list(size)
+    view.OrientationAxesVisibility = 0
+    view.Background = [0.32, 0.34, 0.43]
+    try:  # ParaView >= 5.10 has palettes; keep the background we set.
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    return view
+
+
+def show_volume(source, view, array, rgb_points=RGB_POINTS, opacity_points=OPACITY_POINTS,
+                unit_distance=4.0):
+    """Show `source` as PPIRay Volume coloured by point array `array`."""
+    display = Show(source, view)
+    display.SetRepresentationType(REPRESENTATION)
+    if display.Representation != REPRESENTATION:
+        fail("'%s' is not offered (plugin not loaded?); representations: %s"
+             % (REPRESENTATION, display.GetProperty("Representation").Available))
+    lut = GetColorTransferFunction(array)
+    lut.RGBPoints = list(rgb_points)
+    pwf = GetOpacityTransferFunction(array)
+    pwf.Points = list(opacity_points)
+    display.ColorArrayName = ["POINTS", array]
+    display.LookupTable = lut
+    display.ScalarOpacityFunction = pwf
+    display.ScalarOpacityUnitDistance = unit_distance
+    return display
+
+
+def set_camera(view, position, focal_point=(0.0, 0.0, 0.0), view_up=(0.0, 1.0, 0.0),
+               zoom=1.0):
+    """Look from `position` at `focal_point`, fit the data, then move `zoom`
+    times closer. Renders once first: paraview.simple resets the camera on
+    the first render of a session, which would undo this."""
+    Render(view)
+    view.CameraPosition = list(position)
+    view.CameraFocalPoint = list(focal_point)
+    view.CameraViewUp = list(view_up)
+    view.ResetCamera()
+    if zoom != 1.0:
+        view.UpdatePropertyInformation()
+        eye = view.GetProperty("CameraPositionInfo")
+        view.CameraPosition = [f + (e - f) / zoom for f, e in zip(focal_point, eye)]
+
+
+def mapper_of(display):
+    """The vtkUnstructuredGridGPURayCastMapper behind a PPIRay Volume display
+    (its counters are read through the ppiray Python package)."""
+    import ppiray  # noqa: F401  (makes the mapper's Python class known)
+    representation = display.GetClientSideObject().GetActiveRepresentation()
+    if representation.GetClassName() != "vtkPPIRayVolumeRepresentation":
+        fail("active representation is %s" % representation.GetClassName())
+    return representation.GetActiveVolumeMapper()
+
+
+def screenshot(view, path):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    Render(view)
+    SaveScreenshot(path, view)
+    return path
+
+
+def compare_with_baseline(image, baseline, temporary):
+    """VTK's regression comparison (vtkTesting, threshold 10 as in VTK's own
+    Python tests); on failure the test and difference images are left in
+    `temporary`."""
+    from vtkmodules.vtkTestingRendering import vtkTesting
+
+    testing = vtkTesting()
+    for arg in ("-V", baseline, "-T", temporary):
+        testing.AddArgument(arg)
+    if testing.RegressionTest(image, 10.0) != vtkTesting.PASSED:
+        return "%s differs from %s" % (image, baseline)
+    return None
+
+
+def rank():
+    return servermanager.vtkProcessModule.GetProcessModule().GetPartitionId()
