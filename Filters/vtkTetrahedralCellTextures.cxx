@@ -1,5 +1,7 @@
 #include "vtkTetrahedralCellTextures.h"
 
+#include "vtkConformingTetrahedra.h"
+
 #include "vtkDataArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -56,14 +58,14 @@ double LongestEdge(const double* p[4])
 //------------------------------------------------------------------------------
 bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
 {
-  std::vector<vtkIdType> unsupported;
-  vtkUnstructuredGridCellAdjacency::ExtractTetrahedra(grid, this->Tets, this->CellIds, unsupported);
-  this->Unsupported = unsupported;
-  this->NumberOfUnsupportedCells = 0;
-  for (size_t i = 1; i < unsupported.size(); i += 2)
-  {
-    this->NumberOfUnsupportedCells += unsupported[i];
-  }
+  ppiray::TetrahedralSplit split;
+  ppiray::SplitIntoTetrahedra(grid, /*tetrahedraOnly=*/false, split);
+  this->NumberOfUnsupportedCells = split.GetNumberOfUnsupportedCells();
+  this->NumberOfSplitCells = split.NumberOfSplitCells;
+  this->NumberOfQuadraticCells = split.NumberOfQuadraticCells;
+  this->Tets = std::move(split.Tets);
+  this->CellIds = std::move(split.CellIds);
+  this->Unsupported = std::move(split.Unsupported);
   this->FacePlanes.clear();
   this->Neighbors.clear();
   this->Field.clear();
@@ -280,4 +282,6 @@ void vtkTetrahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
   os << indent << "NumberOfNaNScalars: " << this->NumberOfNaNScalars << "\n";
   os << indent << "NumberOfUnsupportedCells: " << this->NumberOfUnsupportedCells << "\n";
+  os << indent << "NumberOfSplitCells: " << this->NumberOfSplitCells << "\n";
+  os << indent << "NumberOfQuadraticCells: " << this->NumberOfQuadraticCells << "\n";
 }

@@ -38,9 +38,12 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * Planes, neighbours and boundary of the tetrahedra of `grid`. Other cell
-   * types are left out and counted (GetUnsupportedCellTypes()). Returns false
-   * when no tetrahedron is left.
+   * Planes, neighbours and boundary of the tetrahedra of `grid`: its
+   * tetrahedra, and its hexahedra, voxels, wedges and pyramids (linear, or
+   * quadratic through their corners) split into tetrahedra that conform
+   * across shared faces (vtkConformingTetrahedra.h). Other cell types are
+   * left out and counted (GetUnsupportedCellTypes()). Returns false when no
+   * tetrahedron is left.
    */
   bool BuildGeometry(vtkUnstructuredGrid* grid);
 
@@ -88,6 +91,10 @@ public:
   vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
   vtkGetMacro(NumberOfNaNScalars, vtkIdType);
   vtkGetMacro(NumberOfUnsupportedCells, vtkIdType);
+  /** Hexahedra, voxels, wedges and pyramids split into tetrahedra. */
+  vtkGetMacro(NumberOfSplitCells, vtkIdType);
+  /** Quadratic (or higher-order) cells, split through their linear corners. */
+  vtkGetMacro(NumberOfQuadraticCells, vtkIdType);
   /** Pairs (VTK cell type, count) of the cells left out. */
   const std::vector<vtkIdType>& GetUnsupportedCellTypes() const { return this->Unsupported; }
 
@@ -117,6 +124,8 @@ protected:
   vtkIdType NumberOfNonManifoldFaces = 0;
   vtkIdType NumberOfNaNScalars = 0;
   vtkIdType NumberOfUnsupportedCells = 0;
+  vtkIdType NumberOfSplitCells = 0;
+  vtkIdType NumberOfQuadraticCells = 0;
 
 private:
   vtkTetrahedralCellTextures(const vtkTetrahedralCellTextures&) = delete;

@@ -1,5 +1,7 @@
 #include "vtkUnstructuredGridCellAdjacency.h"
 
+#include "vtkConformingTetrahedra.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellType.h"
@@ -46,46 +48,11 @@ void vtkUnstructuredGridCellAdjacency::ExtractTetrahedra(vtkUnstructuredGrid* gr
   std::vector<vtkIdType>& tets, std::vector<vtkIdType>& cellIds,
   std::vector<vtkIdType>& unsupported)
 {
-  tets.clear();
-  cellIds.clear();
-  unsupported.clear();
-  vtkCellArray* cells = grid ? grid->GetCells() : nullptr;
-  if (!cells)
-  {
-    return;
-  }
-  const vtkIdType numberOfCells = grid->GetNumberOfCells();
-  tets.reserve(4 * numberOfCells);
-  cellIds.reserve(numberOfCells);
-  auto iter = vtk::TakeSmartPointer(cells->NewIterator());
-  vtkIdType cellId = 0;
-  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cellId)
-  {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    iter->GetCurrentCell(npts, pts);
-    const int type = grid->GetCellType(cellId);
-    if (type == VTK_TETRA && npts == 4)
-    {
-      tets.insert(tets.end(), pts, pts + 4);
-      cellIds.push_back(cellId);
-      continue;
-    }
-    auto it = unsupported.begin();
-    for (; it != unsupported.end(); it += 2)
-    {
-      if (*it == type)
-      {
-        ++*(it + 1);
-        break;
-      }
-    }
-    if (it == unsupported.end())
-    {
-      unsupported.push_back(type);
-      unsupported.push_back(1);
-    }
-  }
+  ppiray::TetrahedralSplit split;
+  ppiray::SplitIntoTetrahedra(grid, /*tetrahedraOnly=*/true, split);
+  tets = std::move(split.Tets);
+  cellIds = std::move(split.CellIds);
+  unsupported = std::move(split.Unsupported);
 }
 
 //------------------------------------------------------------------------------

@@ -338,13 +338,19 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateGeometry(vtkUnstructuredGridBase
   vtkTetrahedralCellTextures& cells = *in.Cells;
   if (cells.GetNumberOfUnsupportedCells() > 0)
   {
-    vtkErrorMacro("Only tetrahedra are supported; skipped "
-      << cells.GetNumberOfUnsupportedCells()
-      << " cells of other types: " << UnsupportedCellsMessage(cells.GetUnsupportedCellTypes()));
+    vtkErrorMacro("Skipped " << cells.GetNumberOfUnsupportedCells()
+                             << " cells that are not 3D cells with 4 to 8 corners: "
+                             << UnsupportedCellsMessage(cells.GetUnsupportedCellTypes()));
+  }
+  if (cells.GetNumberOfQuadraticCells() > 0)
+  {
+    vtkWarningMacro(<< cells.GetNumberOfQuadraticCells()
+                    << " quadratic (or higher-order) cells are rendered through their linear "
+                       "corners only.");
   }
   if (!in.GeometryValid)
   {
-    vtkErrorMacro("No tetrahedra to render (" << input->GetNumberOfCells() << " cells).");
+    vtkErrorMacro("No 3D cells to render (" << input->GetNumberOfCells() << " cells).");
     return false;
   }
   if (cells.GetNumberOfTetrahedra() > (VTK_INT_MAX / 4) ||

@@ -2,8 +2,9 @@
 // an empty grid (renders nothing, silently), a grid without scalars (error),
 // NaN scalars (warning; the touching cells render empty, nothing else
 // changes), unsupported cells only (error naming the type and count), a mix
-// of tetrahedra and hexahedra (error; the tetrahedra still render), and a
-// zero-volume tetrahedron (warning; skipped).
+// of tetrahedra and a 2D cell (error; the tetrahedra still render), quadratic
+// cells (warning; rendered through their corners) and a zero-volume
+// tetrahedron (warning; skipped).
 
 #include "PPIRayImageCompare.h"
 #include "PPIRayTestScenes.h"
@@ -11,6 +12,7 @@
 #include "vtkCommand.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
+#include <cmath>
 #include <iostream>
 #include <limits>
 
@@ -114,36 +116,54 @@ int TestGPURayCastBadInput(int, char*[])
       Lit(nn.Image) > 1000,
     "NaN scalars: warning, the touching cells change, the rest renders");
 
-  // Hexahedra only.
-  vtkNew<vtkUnstructuredGrid> hexes;
+  // Unsupported 3D cells only (a pentagonal prism: 10 corners).
+  vtkNew<vtkUnstructuredGrid> prisms;
   vtkNew<vtkPoints> points;
-  for (int i = 0; i < 8; ++i)
+  vtkNew<vtkDoubleArray> prismScalars;
+  vtkIdType prism[10];
+  for (int i = 0; i < 10; ++i)
   {
-    points->InsertNextPoint(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+    const double angle = 2.0 * 3.141592653589793 * (i % 5) / 5.0;
+    prism[i] = points->InsertNextPoint(std::cos(angle), std::sin(angle), i < 5 ? 0.0 : 1.0);
+    prismScalars->InsertNextValue(0.1 * i);
   }
-  hexes->SetPoints(points);
-  const vtkIdType hex[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
-  hexes->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
-  vtkNew<vtkDoubleArray> hexScalars;
-  for (int i = 0; i < 8; ++i)
-  {
-    hexScalars->InsertNextValue(0.1 * i);
-  }
-  hexes->GetPointData()->SetScalars(hexScalars);
-  const Outcome h = RenderGrid(hexes);
-  std::cout << "hexahedra: " << h.Errors << "\n";
-  errors += Expect(h.Errors.find("1 vtkHexahedron") != std::string::npos && Lit(h.Image) == 0,
-    "hexahedra only: error naming type and count, nothing drawn");
+  prisms->SetPoints(points);
+  prisms->InsertNextCell(VTK_PENTAGONAL_PRISM, 10, prism);
+  prisms->GetPointData()->SetScalars(prismScalars);
+  const Outcome h = RenderGrid(prisms);
+  std::cout << "pentagonal prism: " << h.Errors << "\n";
+  errors += Expect(h.Errors.find("1 vtkPentagonalPrism") != std::string::npos && Lit(h.Image) == 0,
+    "unsupported cells only: error naming type and count, nothing drawn");
 
-  // Tetrahedra plus one hexahedron: error, the tetrahedra still render.
+  // Tetrahedra plus one triangle (a 2D cell): error, the tetrahedra still render.
   vtkNew<vtkUnstructuredGrid> mixed;
   mixed->DeepCopy(good);
-  const vtkIdType mixedHex[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
-  mixed->InsertNextCell(VTK_HEXAHEDRON, 8, mixedHex);
+  const vtkIdType triangle[3] = { 0, 1, 2 };
+  mixed->InsertNextCell(VTK_TRIANGLE, 3, triangle);
   const Outcome m = RenderGrid(mixed);
-  errors += Expect(m.Errors.find("1 vtkHexahedron") != std::string::npos &&
+  errors += Expect(m.Errors.find("1 vtkTriangle") != std::string::npos &&
       ppiray_test::Compare(reference.Image, m.Image).Max == 0,
-    "mixed: error, tetrahedra render unchanged");
+    "tetrahedra and a triangle: error, tetrahedra render unchanged");
+
+  // The same tetrahedra as quadratic tetrahedra (mid-edge points unused):
+  // warning, rendered through their corners, image unchanged.
+  vtkNew<vtkUnstructuredGrid> quadratic;
+  quadratic->SetPoints(good->GetPoints());
+  quadratic->GetPointData()->ShallowCopy(good->GetPointData());
+  for (vtkIdType c = 0; c < good->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    good->GetCellPoints(c, npts, pts);
+    const vtkIdType ten[10] = { pts[0], pts[1], pts[2], pts[3], pts[0], pts[1], pts[2], pts[3],
+      pts[0], pts[1] };
+    quadratic->InsertNextCell(VTK_QUADRATIC_TETRA, 10, ten);
+  }
+  const Outcome q = RenderGrid(quadratic);
+  std::cout << "quadratic: " << q.Warnings << "\n";
+  errors += Expect(q.Warnings.find("quadratic") != std::string::npos && q.Errors.empty() &&
+      ppiray_test::Compare(reference.Image, q.Image).Max == 0,
+    "quadratic tetrahedra: warning, rendered through their corners");
 
   // A zero-volume tetrahedron added: warning, image unchanged.
   vtkNew<vtkUnstructuredGrid> flat;

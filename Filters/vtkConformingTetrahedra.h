@@ -1,0 +1,58 @@
+/**
+ * @file   vtkConformingTetrahedra.h
+ * @brief  linear 3D cells split into tetrahedra that conform across shared faces
+ *
+ * Every quadrilateral face is split along the diagonal through its smallest
+ * global point id, so the two cells that share a face split it the same way
+ * and the tetrahedra of a mixed mesh (tetrahedra, hexahedra, voxels, wedges,
+ * pyramids) meet face to face: the traversal stays watertight even where a
+ * quadrilateral is not planar.
+ *
+ * A cell is split as a cone from its smallest point v: one tetrahedron (v, T)
+ * for every triangle T of the faces that do not contain v (Dompierre et al.,
+ * "How to subdivide pyramids, prisms and hexahedra into tetrahedra", 1999,
+ * use the same smallest-index rule). The faces that contain v are fanned from
+ * v, which is their smallest point too, so every face follows the rule.
+ * Counts: hexahedron and voxel 6, wedge 3, pyramid 2. The cone is exact for
+ * cells that are star-shaped from v (every convex cell); the field becomes
+ * linear in each tetrahedron (the subdivision error hexahedra rendered
+ * natively avoid).
+ *
+ * Quadratic and higher-order cells are split through their linear corners.
+ */
+#ifndef vtkConformingTetrahedra_h
+#define vtkConformingTetrahedra_h
+
+#include "ppirayFiltersModule.h" // for export macro
+#include "vtkType.h"
+
+#include <vector> // for std::vector
+
+class vtkUnstructuredGrid;
+
+namespace ppiray
+{
+/** What SplitIntoTetrahedra found, per kind of input cell. */
+struct TetrahedralSplit
+{
+  std::vector<vtkIdType> Tets;    // 4 point ids per tetrahedron
+  std::vector<vtkIdType> CellIds; // input cell of each tetrahedron
+  vtkIdType NumberOfSplitCells = 0;     // hexahedra, voxels, wedges, pyramids
+  vtkIdType NumberOfQuadraticCells = 0; // rendered through their linear corners
+  std::vector<vtkIdType> Unsupported;   // pairs (cell type, count), left out
+  vtkIdType GetNumberOfUnsupportedCells() const;
+};
+
+/**
+ * The tetrahedra of `grid`: its tetrahedra as they are and, unless
+ * `tetrahedraOnly`, the conforming split of its hexahedra, voxels, wedges and
+ * pyramids (linear or not). Other cells are counted in Unsupported.
+ */
+PPIRAYFILTERS_EXPORT void SplitIntoTetrahedra(
+  vtkUnstructuredGrid* grid, bool tetrahedraOnly, TetrahedralSplit& split);
+
+/** Number of tetrahedra SplitIntoTetrahedra makes of a linear cell type (0: not split). */
+PPIRAYFILTERS_EXPORT int TetrahedraPerCell(int linearCellType);
+}
+
+#endif
