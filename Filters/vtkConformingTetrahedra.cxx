@@ -21,17 +21,11 @@ const Face WedgeFaces[] = { { 0, 1, 2, -1 }, { 3, 5, 4, -1 }, { 0, 3, 4, 1 }, { 
   { 2, 5, 3, 0 } };
 const Face PyramidFaces[] = { { 0, 3, 2, 1 }, { 0, 1, 4, -1 }, { 1, 2, 4, -1 }, { 2, 3, 4, -1 },
   { 3, 0, 4, -1 } };
-// A voxel's points in hexahedron order (the voxel's x varies fastest).
-const int VoxelToHexahedron[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
+}
 
-struct LinearShape
+namespace ppiray
 {
-  int Type;             // VTK_TETRA, VTK_HEXAHEDRON, VTK_WEDGE, VTK_PYRAMID or 0
-  int Corners;          // its number of points
-  bool HigherOrder;     // the corners of a quadratic (or higher) cell
-};
-
-LinearShape ShapeOf(int type)
+LinearShape LinearShapeOf(int type)
 {
   switch (type)
   {
@@ -66,6 +60,10 @@ LinearShape ShapeOf(int type)
       return { 0, 0, false };
   }
 }
+}
+
+namespace
+{
 
 // Tetrahedra (apex, triangle) over the faces of `faces` that miss the apex;
 // a quadrilateral splits along the diagonal through its smallest point id.
@@ -87,7 +85,7 @@ void AppendCone(const Face (&faces)[N], const vtkIdType* pts, int apex,
       continue;
     }
     const vtkIdType d = pts[face[3]];
-    if (std::min(a, c) < std::min(b, d))
+    if (ppiray::SplitsAlongFirstDiagonal(a, b, c, d))
     {
       tets.insert(tets.end(), { pts[apex], a, b, c, pts[apex], a, c, d });
     }
@@ -156,7 +154,7 @@ void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, Tetrahe
     const vtkIdType* pts;
     iter->GetCurrentCell(npts, pts);
     const int type = grid->GetCellType(cellId);
-    const LinearShape shape = ShapeOf(type);
+    const LinearShape shape = LinearShapeOf(type);
     const bool accepted = shape.Type != 0 && npts >= shape.Corners &&
       (!tetrahedraOnly || (type == VTK_TETRA && npts == 4));
     if (!accepted)
@@ -179,16 +177,9 @@ void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, Tetrahe
     }
     const size_t before = split.Tets.size();
     vtkIdType corners[8];
-    if (type == VTK_VOXEL)
+    for (int i = 0; i < shape.Corners; ++i)
     {
-      for (int i = 0; i < 8; ++i)
-      {
-        corners[i] = pts[VoxelToHexahedron[i]];
-      }
-    }
-    else
-    {
-      std::copy(pts, pts + shape.Corners, corners);
+      corners[i] = pts[HexahedronCorner(type, i)];
     }
     const int apex = SmallestPoint(corners, shape.Corners);
     switch (shape.Type)

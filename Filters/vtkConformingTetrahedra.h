@@ -24,6 +24,7 @@
 #define vtkConformingTetrahedra_h
 
 #include "ppirayFiltersModule.h" // for export macro
+#include "vtkCellType.h"               // for VTK_VOXEL
 #include "vtkType.h"
 
 #include <vector> // for std::vector
@@ -32,6 +33,24 @@ class vtkUnstructuredGrid;
 
 namespace ppiray
 {
+/** The linear cell a cell type is rendered as. */
+struct LinearShape
+{
+  int Type;         // VTK_TETRA, VTK_HEXAHEDRON (also for voxels), VTK_WEDGE, VTK_PYRAMID; 0: none
+  int Corners;      // its number of corners: the first points of the cell
+  bool HigherOrder; // the corners of a quadratic (or higher-order) cell
+};
+
+/** LinearShape of a VTK cell type ({0, 0, false} for cells not rendered). */
+PPIRAYFILTERS_EXPORT LinearShape LinearShapeOf(int cellType);
+
+/** Position in a cell's point list of corner i in VTK_HEXAHEDRON order (voxels differ). */
+inline int HexahedronCorner(int cellType, int i)
+{
+  static const int voxel[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
+  return cellType == VTK_VOXEL ? voxel[i] : i;
+}
+
 /** What SplitIntoTetrahedra found, per kind of input cell. */
 struct TetrahedralSplit
 {
@@ -50,6 +69,15 @@ struct TetrahedralSplit
  */
 PPIRAYFILTERS_EXPORT void SplitIntoTetrahedra(
   vtkUnstructuredGrid* grid, bool tetrahedraOnly, TetrahedralSplit& split);
+
+/**
+ * The diagonal rule: true if quadrilateral (a, b, c, d) is split along a-c,
+ * false if along b-d; the diagonal through the smallest of the four ids.
+ */
+inline bool SplitsAlongFirstDiagonal(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d)
+{
+  return (a < c ? a : c) < (b < d ? b : d);
+}
 
 /** Number of tetrahedra SplitIntoTetrahedra makes of a linear cell type (0: not split). */
 PPIRAYFILTERS_EXPORT int TetrahedraPerCell(int linearCellType);

@@ -1,5 +1,7 @@
 #include "vtkHexahedronCoefficients.h"
 
+#include "vtkConformingTetrahedra.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -32,15 +34,6 @@ namespace
 // det[p_j - p_i, p_k - p_i, p_l - p_i] > 0).
 const int CornerFrames[8][3] = { { 1, 3, 4 }, { 2, 0, 5 }, { 3, 1, 6 }, { 0, 2, 7 },
   { 7, 5, 0 }, { 4, 6, 1 }, { 5, 7, 2 }, { 6, 4, 3 } };
-// A voxel's points in hexahedron order.
-const int VoxelToHexahedron[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
-
-bool IsHexahedronType(int type)
-{
-  return type == VTK_HEXAHEDRON || type == VTK_VOXEL || type == VTK_QUADRATIC_HEXAHEDRON ||
-    type == VTK_TRIQUADRATIC_HEXAHEDRON || type == VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON ||
-    type == VTK_LAGRANGE_HEXAHEDRON || type == VTK_BEZIER_HEXAHEDRON;
-}
 
 // Distance between the lines of a quadrilateral's diagonals q0q2 and q1q3,
 // relative to the longer diagonal: |(q1 - q0) . (d1 x d2)| / |d1 x d2| / max|d|.
@@ -296,13 +289,14 @@ int vtkHexahedronCoefficients::RequestData(
       double frame[12] = { 0 }, c[8] = { 0 }, deviation = 0.0;
       int flags = NOT_A_HEXAHEDRON;
       const int type = input->GetCellType(cellId);
-      if (IsHexahedronType(type) && offsets[cellId + 1] - offsets[cellId] >= 8)
+      if (ppiray::LinearShapeOf(type).Type == VTK_HEXAHEDRON &&
+        offsets[cellId + 1] - offsets[cellId] >= 8)
       {
         const vtkIdType* pts = ids.data() + offsets[cellId];
         double corners[8][3], values[8];
         for (int i = 0; i < 8; ++i)
         {
-          const vtkIdType id = pts[type == VTK_VOXEL ? VoxelToHexahedron[i] : i];
+          const vtkIdType id = pts[ppiray::HexahedronCorner(type, i)];
           points->GetPoint(id, corners[i]);
           values[i] = scalars ? scalars->GetComponent(id, 0) : 0.0;
         }

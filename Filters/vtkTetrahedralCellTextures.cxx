@@ -1,6 +1,7 @@
 #include "vtkTetrahedralCellTextures.h"
 
 #include "vtkConformingTetrahedra.h"
+#include "vtkMeshLocalFrame.h"
 
 #include "vtkDataArray.h"
 #include "vtkNew.h"
@@ -81,28 +82,8 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     return false;
   }
 
-  // Local frame: the centre of the bounds.
-  double bounds[6];
-  grid->GetPoints()->GetBounds(bounds);
-  this->Length = 0;
-  for (int i = 0; i < 3; ++i)
-  {
-    this->Origin[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
-    this->Length += (bounds[2 * i + 1] - bounds[2 * i]) * (bounds[2 * i + 1] - bounds[2 * i]);
-  }
-  this->Length = std::sqrt(this->Length);
+  this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
   const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
-  this->LocalPoints.resize(3 * numberOfPoints);
-  vtkPoints* points = grid->GetPoints();
-  for (vtkIdType p = 0; p < numberOfPoints; ++p)
-  {
-    double x[3];
-    points->GetPoint(p, x);
-    for (int i = 0; i < 3; ++i)
-    {
-      this->LocalPoints[3 * p + i] = x[i] - this->Origin[i];
-    }
-  }
 
   // Face planes: n_f outward unit normal, d_f = n_f . (face centroid).
   this->Degenerate.assign(numberOfTets, 0);

@@ -1,0 +1,275 @@
+#include "vtkHexahedralCellTextures.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellType.h"
+#include "vtkConformingTetrahedra.h"
+#include "vtkDataArray.h"
+#include "vtkHexahedron.h"
+#include "vtkHexahedronCoefficients.h"
+#include "vtkMath.h"
+#include "vtkMeshLocalFrame.h"
+#include "vtkObjectFactory.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+
+vtkStandardNewMacro(vtkHexahedralCellTextures);
+
+namespace
+{
+// Six times the volume of the parallelepiped at corner 0: det[p1-p0, p3-p0, p4-p0],
+// summed with the opposite corner's, so that a left-handed cell is negative.
+double Handedness(const double* local, const vtkIdType c[8])
+{
+  auto corner = [&](int i) { return local + 3 * c[i]; };
+  double a[3], b[3], d[3], e[3], f[3], g[3];
+  vtkMath::Subtract(corner(1), corner(0), a);
+  vtkMath::Subtract(corner(3), corner(0), b);
+  vtkMath::Subtract(corner(4), corner(0), d);
+  vtkMath::Subtract(corner(5), corner(6), e);
+  vtkMath::Subtract(corner(7), corner(6), f);
+  vtkMath::Subtract(corner(2), corner(6), g);
+  return vtkMath::Determinant3x3(a, b, d) + vtkMath::Determinant3x3(e, f, g);
+}
+
+struct FaceKey
+{
+  std::array<vtkIdType, 4> Ids; // sorted
+  vtkIdType Owner;              // 6 h + f
+  bool operator<(const FaceKey& o) const { return this->Ids < o.Ids; }
+};
+}
+
+//------------------------------------------------------------------------------
+int vtkHexahedralCellTextures::TriangleCorner(int f, int t, int v, bool secondDiagonal)
+{
+  // Face (q0, q1, q2, q3): along q0-q2 the triangles are (q0, q1, q2), (q0, q2, q3);
+  // along q1-q3 they are (q1, q2, q3), (q1, q3, q0). Both keep the face's winding.
+  static const int first[2][3] = { { 0, 1, 2 }, { 0, 2, 3 } };
+  static const int second[2][3] = { { 1, 2, 3 }, { 1, 3, 0 } };
+  const int q = secondDiagonal ? second[t][v] : first[t][v];
+  return static_cast<int>(vtkHexahedron::GetFaceArray(f)[q]);
+}
+
+//------------------------------------------------------------------------------
+bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
+{
+  this->CellIds.clear();
+  this->CornerIds.clear();
+  this->Corners.clear();
+  this->Neighbors.clear();
+  this->Coefficients.clear();
+  this->BoundaryPoints.clear();
+  this->BoundaryTriangles.clear();
+  this->BoundaryFaces.clear();
+  this->NumberOfMirroredHexahedra = 0;
+  this->NumberOfNonManifoldFaces = 0;
+  this->NumberOfOtherCells = 0;
+  this->NumberOfQuadraticCells = 0;
+  if (!grid || !grid->GetPoints() || !grid->GetCells())
+  {
+    return false;
+  }
+  this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
+  const double* local = this->LocalPoints.data();
+
+  // Hexahedra, right-handed.
+  auto iter = vtk::TakeSmartPointer(grid->GetCells()->NewIterator());
+  vtkIdType cellId = 0;
+  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cellId)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    iter->GetCurrentCell(npts, pts);
+    const int type = grid->GetCellType(cellId);
+    const ppiray::LinearShape shape = ppiray::LinearShapeOf(type);
+    if (shape.Type != VTK_HEXAHEDRON || npts < 8)
+    {
+      ++this->NumberOfOtherCells;
+      continue;
+    }
+    this->NumberOfQuadraticCells += shape.HigherOrder ? 1 : 0;
+    vtkIdType c[8];
+    for (int i = 0; i < 8; ++i)
+    {
+      c[i] = pts[ppiray::HexahedronCorner(type, i)];
+    }
+    if (Handedness(local, c) < 0)
+    {
+      std::rotate(c, c + 4, c + 8); // swap bottom and top
+      ++this->NumberOfMirroredHexahedra;
+    }
+    this->CellIds.push_back(cellId);
+    this->CornerIds.insert(this->CornerIds.end(), c, c + 8);
+  }
+  const vtkIdType numberOfHexahedra = this->GetNumberOfHexahedra();
+  if (numberOfHexahedra == 0)
+  {
+    return false;
+  }
+
+  // Corners in the local frame.
+  this->Corners.resize(24 * numberOfHexahedra);
+  for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
+  {
+    for (int i = 0; i < 8; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        this->Corners[24 * h + 3 * i + k] =
+          static_cast<float>(local[3 * this->CornerIds[8 * h + i] + k]);
+      }
+    }
+  }
+
+  // Faces matched by their sorted point ids; diagonals by the smallest id.
+  std::vector<FaceKey> faces(6 * numberOfHexahedra);
+  this->Neighbors.assign(8 * numberOfHexahedra, -1);
+  for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
+  {
+    const vtkIdType* c = this->CornerIds.data() + 8 * h;
+    int mask = 0;
+    for (int f = 0; f < 6; ++f)
+    {
+      const vtkIdType* q = vtkHexahedron::GetFaceArray(f);
+      FaceKey& key = faces[6 * h + f];
+      key.Ids = { c[q[0]], c[q[1]], c[q[2]], c[q[3]] };
+      if (!ppiray::SplitsAlongFirstDiagonal(key.Ids[0], key.Ids[1], key.Ids[2], key.Ids[3]))
+      {
+        mask |= 1 << f;
+      }
+      std::sort(key.Ids.begin(), key.Ids.end());
+      key.Owner = 6 * h + f;
+    }
+    this->Neighbors[8 * h + 6] = mask;
+  }
+  std::sort(faces.begin(), faces.end());
+  std::vector<vtkIdType> boundary; // 6 h + f
+  for (size_t i = 0; i < faces.size();)
+  {
+    size_t j = i + 1;
+    while (j < faces.size() && faces[j].Ids == faces[i].Ids)
+    {
+      ++j;
+    }
+    if (j - i == 2)
+    {
+      const vtkIdType a = faces[i].Owner, b = faces[i + 1].Owner;
+      this->Neighbors[8 * (a / 6) + a % 6] = static_cast<int>(b / 6);
+      this->Neighbors[8 * (b / 6) + b % 6] = static_cast<int>(a / 6);
+    }
+    else
+    {
+      if (j - i > 2)
+      {
+        ++this->NumberOfNonManifoldFaces;
+      }
+      for (size_t k = i; k < j; ++k)
+      {
+        boundary.push_back(faces[k].Owner);
+      }
+    }
+    i = j;
+  }
+  std::sort(boundary.begin(), boundary.end());
+
+  // Boundary triangles, wound outward (VTK's hexahedron faces are outward for
+  // a right-handed cell), over a compact set of points.
+  std::vector<vtkIdType> pointMap(grid->GetNumberOfPoints(), -1);
+  for (vtkIdType owner : boundary)
+  {
+    const vtkIdType h = owner / 6;
+    const int f = static_cast<int>(owner % 6);
+    const bool second = (this->Neighbors[8 * h + 6] >> f) & 1;
+    for (int t = 0; t < 2; ++t)
+    {
+      for (int v = 0; v < 3; ++v)
+      {
+        const vtkIdType id = this->CornerIds[8 * h + TriangleCorner(f, t, v, second)];
+        if (pointMap[id] < 0)
+        {
+          pointMap[id] = static_cast<vtkIdType>(this->BoundaryPoints.size() / 3);
+          for (int k = 0; k < 3; ++k)
+          {
+            this->BoundaryPoints.push_back(static_cast<float>(local[3 * id + k]));
+          }
+        }
+        this->BoundaryTriangles.push_back(static_cast<unsigned int>(pointMap[id]));
+      }
+      this->BoundaryFaces.push_back(static_cast<int>(12 * h + 2 * f + t));
+    }
+  }
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScalars, int component)
+{
+  const vtkIdType numberOfHexahedra = this->GetNumberOfHexahedra();
+  this->Coefficients.assign(8 * numberOfHexahedra, 0.0f);
+  this->NumberOfNaNScalars = 0;
+  if (!scalars || numberOfHexahedra == 0 || component < 0 ||
+    component >= scalars->GetNumberOfComponents())
+  {
+    return false;
+  }
+  std::atomic<vtkIdType> nanCells(0);
+#pragma omp parallel for schedule(static)
+  for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
+  {
+    float* out = this->Coefficients.data() + 8 * h;
+    double s[8];
+    bool hasNaN = false;
+    if (cellScalars)
+    {
+      s[0] = scalars->GetComponent(this->CellIds[h], component);
+      std::fill(s + 1, s + 8, s[0]);
+      hasNaN = std::isnan(s[0]);
+    }
+    else
+    {
+      for (int i = 0; i < 8; ++i)
+      {
+        s[i] = scalars->GetComponent(this->CornerIds[8 * h + i], component);
+        hasNaN = hasNaN || std::isnan(s[i]);
+      }
+    }
+    if (hasNaN)
+    {
+      out[0] = TransparentCellOffset();
+      ++nanCells;
+      continue;
+    }
+    double corners[8][3], frame[12], c[8];
+    for (int i = 0; i < 8; ++i)
+    {
+      std::copy_n(this->LocalPoints.data() + 3 * this->CornerIds[8 * h + i], 3, corners[i]);
+    }
+    vtkHexahedronCoefficients::ComputeCell(corners, s, 1e-3, 1e-6, frame, c, nullptr);
+    for (int k = 0; k < 8; ++k)
+    {
+      out[k] = static_cast<float>(c[k]);
+    }
+  }
+  this->NumberOfNaNScalars = nanCells.load();
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfHexahedra: " << this->GetNumberOfHexahedra() << "\n";
+  os << indent << "NumberOfMirroredHexahedra: " << this->NumberOfMirroredHexahedra << "\n";
+  os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
+  os << indent << "NumberOfNaNScalars: " << this->NumberOfNaNScalars << "\n";
+  os << indent << "NumberOfOtherCells: " << this->NumberOfOtherCells << "\n";
+  os << indent << "NumberOfQuadraticCells: " << this->NumberOfQuadraticCells << "\n";
+}

@@ -1,0 +1,116 @@
+/**
+ * @class   vtkHexahedralCellTextures
+ * @brief   per-hexahedron "cell textures" for ray casting hexahedra without
+ *          subdividing them, built on the CPU
+ *
+ * Per hexahedron, 160 bytes (Miranda 2011, Sec. 3.3 stores 248: twelve face
+ * planes, six neighbours and eight world-frame coefficients):
+ * - corners: the 8 corners (24 floats) relative to the centre of the mesh's
+ *   bounds, in VTK_HEXAHEDRON order, right-handed (a mirrored hexahedron has
+ *   its bottom and top swapped). Face planes are derived from them on the GPU;
+ * - neighbours: the hexahedron through each face of vtkHexahedron::GetFaceArray
+ *   (-1 on the boundary), and a 6-bit mask: bit f set when face f is split
+ *   into triangles along its second diagonal (q1-q3), clear along q0-q2, by
+ *   the rule of vtkConformingTetrahedra.h (the diagonal through the smallest
+ *   point id), so both cells sharing a face see the same two triangles;
+ * - coefficients: c0..c7 of the trilinear field in the cell's frame (origin
+ *   corner 0, axes to corners 1, 3, 4; vtkHexahedronCoefficients), c0 =
+ *   TransparentCellOffset() for a cell touching a NaN scalar.
+ *
+ * Also the boundary triangles (two per boundary face, split by the same rule,
+ * wound outward) with their points and, per triangle, 12 h + 2 f + (0 or 1).
+ *
+ * Cells: VTK_HEXAHEDRON, VTK_VOXEL and the corners of quadratic and
+ * higher-order hexahedra; other cells are counted (GetNumberOfOtherCells())
+ * and left out. No OpenGL here.
+ */
+#ifndef vtkHexahedralCellTextures_h
+#define vtkHexahedralCellTextures_h
+
+#include "ppirayFiltersModule.h" // for export macro
+#include "vtkObject.h"
+
+#include <vector> // for std::vector
+
+class vtkDataArray;
+class vtkUnstructuredGrid;
+
+class PPIRAYFILTERS_EXPORT vtkHexahedralCellTextures : public vtkObject
+{
+public:
+  static vtkHexahedralCellTextures* New();
+  vtkTypeMacro(vtkHexahedralCellTextures, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** Corners, neighbours, diagonals and boundary. False if there is no hexahedron. */
+  bool BuildGeometry(vtkUnstructuredGrid* grid);
+
+  /**
+   * Coefficients from `scalars` (point data, or cell data when `cellScalars`:
+   * a constant c0), `component`. Call after BuildGeometry().
+   */
+  bool BuildField(vtkDataArray* scalars, bool cellScalars, int component);
+
+  /** Value stored as c0 of a hexahedron that must render empty (NaN scalar). */
+  static constexpr float TransparentCellOffset() { return -3.0e38f; }
+
+  vtkIdType GetNumberOfHexahedra() const { return static_cast<vtkIdType>(this->CellIds.size()); }
+  const double* GetOrigin() const { return this->Origin; }
+  double GetLength() const { return this->Length; }
+  /** Input cell id of each hexahedron. */
+  const std::vector<vtkIdType>& GetCellIds() const { return this->CellIds; }
+  /** Point ids, 8 per hexahedron, in the (right-handed) order of the corners. */
+  const std::vector<vtkIdType>& GetCornerIds() const { return this->CornerIds; }
+  /** 24 floats per hexahedron (6 RGBA texels). */
+  const std::vector<float>& GetCorners() const { return this->Corners; }
+  /** 8 ints per hexahedron (2 RGBA texels): 6 neighbours, the diagonal mask, 0. */
+  const std::vector<int>& GetNeighbors() const { return this->Neighbors; }
+  /** 8 floats per hexahedron (2 RGBA texels). */
+  const std::vector<float>& GetCoefficients() const { return this->Coefficients; }
+  const std::vector<float>& GetBoundaryPoints() const { return this->BoundaryPoints; }
+  const std::vector<unsigned int>& GetBoundaryTriangles() const
+  {
+    return this->BoundaryTriangles;
+  }
+  /** Per boundary triangle: 12 h + 2 f + t (t: first or second triangle of face f). */
+  const std::vector<int>& GetBoundaryFaces() const { return this->BoundaryFaces; }
+
+  vtkGetMacro(NumberOfMirroredHexahedra, vtkIdType);
+  vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
+  vtkGetMacro(NumberOfNaNScalars, vtkIdType);
+  vtkGetMacro(NumberOfOtherCells, vtkIdType);
+  vtkGetMacro(NumberOfQuadraticCells, vtkIdType);
+
+  /** Bytes of the per-hexahedron arrays (corners, neighbours, coefficients). */
+  static constexpr int BytesPerHexahedron() { return 160; }
+
+  /** Corner v (0..2) of triangle t (0, 1) of face f, given the face's diagonal bit. */
+  static int TriangleCorner(int f, int t, int v, bool secondDiagonal);
+
+protected:
+  vtkHexahedralCellTextures() = default;
+  ~vtkHexahedralCellTextures() override = default;
+
+  double Origin[3] = { 0, 0, 0 };
+  double Length = 0;
+  std::vector<vtkIdType> CellIds;
+  std::vector<vtkIdType> CornerIds;
+  std::vector<float> Corners;
+  std::vector<int> Neighbors;
+  std::vector<float> Coefficients;
+  std::vector<float> BoundaryPoints;
+  std::vector<unsigned int> BoundaryTriangles;
+  std::vector<int> BoundaryFaces;
+  std::vector<double> LocalPoints;
+  vtkIdType NumberOfMirroredHexahedra = 0;
+  vtkIdType NumberOfNonManifoldFaces = 0;
+  vtkIdType NumberOfNaNScalars = 0;
+  vtkIdType NumberOfOtherCells = 0;
+  vtkIdType NumberOfQuadraticCells = 0;
+
+private:
+  vtkHexahedralCellTextures(const vtkHexahedralCellTextures&) = delete;
+  void operator=(const vtkHexahedralCellTextures&) = delete;
+};
+
+#endif
