@@ -115,17 +115,24 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
 
   // Corners in the local frame.
   this->Corners.resize(24 * numberOfHexahedra);
+  double diameter2 = 0;
   for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
   {
+    const vtkIdType* c = this->CornerIds.data() + 8 * h;
     for (int i = 0; i < 8; ++i)
     {
       for (int k = 0; k < 3; ++k)
       {
-        this->Corners[24 * h + 3 * i + k] =
-          static_cast<float>(local[3 * this->CornerIds[8 * h + i] + k]);
+        this->Corners[24 * h + 3 * i + k] = static_cast<float>(local[3 * c[i] + k]);
+      }
+      for (int j = 0; j < i; ++j)
+      {
+        diameter2 =
+          std::max(diameter2, vtkMath::Distance2BetweenPoints(local + 3 * c[i], local + 3 * c[j]));
       }
     }
   }
+  this->MaximumCellDiameter = std::sqrt(diameter2);
 
   // Faces matched by their sorted point ids; diagonals by the smallest id.
   std::vector<FaceKey> faces(6 * numberOfHexahedra);

@@ -57,6 +57,8 @@ public:
   vtkIdType GetNumberOfHexahedra() const { return static_cast<vtkIdType>(this->CellIds.size()); }
   const double* GetOrigin() const { return this->Origin; }
   double GetLength() const { return this->Length; }
+  /** The largest distance between two corners of one hexahedron. */
+  double GetMaximumCellDiameter() const { return this->MaximumCellDiameter; }
   /** Input cell id of each hexahedron. */
   const std::vector<vtkIdType>& GetCellIds() const { return this->CellIds; }
   /** Point ids, 8 per hexahedron, in the (right-handed) order of the corners. */
@@ -93,6 +95,7 @@ protected:
 
   double Origin[3] = { 0, 0, 0 };
   double Length = 0;
+  double MaximumCellDiameter = 0;
   std::vector<vtkIdType> CellIds;
   std::vector<vtkIdType> CornerIds;
   std::vector<float> Corners;

@@ -4,6 +4,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellTypes.h"
 #include "vtkDataArray.h"
+#include "vtkHexahedralCellTextures.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -31,7 +32,12 @@
 #include "composite_fs.h"
 #include "entry_fs.h"
 #include "entry_vs.h"
+#include "hexahedron_accurate_fs.h"
+#include "hexahedron_fast_fs.h"
+#include "hexahedron_field_fs.h"
+#include "march_common_fs.h"
 #include "march_fs.h"
+#include "march_hexahedra_fs.h"
 #include "piece_exact_fs.h"
 #include "piece_ppi_fs.h"
 #include "ray_fs.h"
@@ -56,6 +62,9 @@ class vtkUnstructuredGridGPURayCastMapper::vtkInternals
 public:
   // CPU caches and what they were built from.
   vtkNew<vtkTetrahedralCellTextures> Cells;
+  vtkNew<vtkHexahedralCellTextures> Hexes;
+  bool Native = false;            // hexahedra rendered natively (Hexes), else tetrahedra (Cells)
+  bool GeometryWantsNative = false; // what the geometry cache was built for
   vtkNew<vtkTransferFunctionControlPoints> ControlPoints;
   vtkNew<vtkUnstructuredGrid> InputCopy; // when the input is not a vtkUnstructuredGrid
   vtkUnstructuredGridBase* GeometryInput = nullptr;
@@ -104,8 +113,32 @@ public:
   // Programs.
   vtkShaderProgram* EntryProgram = nullptr;
   std::unique_ptr<vtkOpenGLQuadHelper> MarchQuad;
-  int MarchQuadMode = -1; // integration mode the march program was built for
+  int MarchQuadKey = -1; // MarchShaderKey() the march program was built for
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+
+  // The active cell textures' common data.
+  const double* Origin() const { return this->Native ? this->Hexes->GetOrigin() : this->Cells->GetOrigin(); }
+  double Length() const { return this->Native ? this->Hexes->GetLength() : this->Cells->GetLength(); }
+  vtkIdType NumberOfCells() const
+  {
+    return this->Native ? this->Hexes->GetNumberOfHexahedra() : this->Cells->GetNumberOfTetrahedra();
+  }
+  double MaximumCellLength() const
+  {
+    return this->Native ? this->Hexes->GetMaximumCellDiameter() : this->Cells->GetMaximumEdgeLength();
+  }
+  const std::vector<float>& BoundaryPointCoordinates() const
+  {
+    return this->Native ? this->Hexes->GetBoundaryPoints() : this->Cells->GetBoundaryPoints();
+  }
+  const std::vector<unsigned int>& BoundaryTriangleIndices() const
+  {
+    return this->Native ? this->Hexes->GetBoundaryTriangles() : this->Cells->GetBoundaryTriangles();
+  }
+  const std::vector<int>& BoundaryFaceCodes() const
+  {
+    return this->Native ? this->Hexes->GetBoundaryFaces() : this->Cells->GetBoundaryFaces();
+  }
 
   size_t TargetBytes() const
   {
@@ -186,9 +219,17 @@ std::string UnsupportedCellsMessage(const std::vector<vtkIdType>& unsupported)
   return message.str();
 }
 
-// The march shader of an integration mode: the traversal with the mode's
-// segment integral (and piece integral) substituted in.
-std::string MarchShader(int mode)
+// Which march program: the integration mode, and for native hexahedra the
+// hexahedron mode.
+int MarchShaderKey(int mode, bool native, int hexahedronMode)
+{
+  return mode + 4 * (native ? 1 + hexahedronMode : 0);
+}
+
+// The march shader of an integration mode: the traversal (tetrahedra, or
+// hexahedra with their field along the ray and hexahedron mode) with the
+// mode's segment integral (and piece integral) substituted in.
+std::string MarchShader(int mode, bool native, int hexahedronMode)
 {
   std::string integrate;
   switch (mode)
@@ -205,7 +246,16 @@ std::string MarchShader(int mode)
     default:
       integrate = std::string(piece_ppi_fs) + segment_split_fs;
   }
-  std::string march = march_fs;
+  std::string march = native ? march_hexahedra_fs : march_fs;
+  if (native)
+  {
+    vtkShaderProgram::Substitute(march, "//PPIRay::HexahedronField::Impl", hexahedron_field_fs);
+    vtkShaderProgram::Substitute(march, "//PPIRay::Hexahedron::Impl",
+      hexahedronMode == vtkUnstructuredGridGPURayCastMapper::HEXAHEDRON_ACCURATE
+        ? hexahedron_accurate_fs
+        : hexahedron_fast_fs);
+  }
+  vtkShaderProgram::Substitute(march, "//PPIRay::MarchCommon::Impl", march_common_fs);
   vtkShaderProgram::Substitute(march, "//PPIRay::TransferFunction::Impl", transfer_function_fs);
   vtkShaderProgram::Substitute(march, "//PPIRay::Integrate::Impl", integrate);
   vtkShaderProgram::Substitute(march, "//PPIRay::Ray::Impl", ray_fs);
@@ -277,6 +327,42 @@ const char* vtkUnstructuredGridGPURayCastMapper::GetIntegrationModeAsString()
 }
 
 //------------------------------------------------------------------------------
+void vtkUnstructuredGridGPURayCastMapper::SetHexahedronMode(int mode)
+{
+  if (mode != HEXAHEDRON_ACCURATE && mode != HEXAHEDRON_FAST && mode != HEXAHEDRON_SUBDIVIDE)
+  {
+    vtkErrorMacro("Unknown hexahedron mode " << mode << "; keeping "
+                                             << this->GetHexahedronModeAsString() << ".");
+    return;
+  }
+  if (mode != this->HexahedronMode)
+  {
+    this->HexahedronMode = mode;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkUnstructuredGridGPURayCastMapper::GetHexahedronModeAsString()
+{
+  switch (this->HexahedronMode)
+  {
+    case HEXAHEDRON_ACCURATE:
+      return "HEXAHEDRON_ACCURATE";
+    case HEXAHEDRON_FAST:
+      return "HEXAHEDRON_FAST";
+    default:
+      return "HEXAHEDRON_SUBDIVIDE";
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkUnstructuredGridGPURayCastMapper::GetNumberOfHexahedra()
+{
+  return this->Internals->Native ? this->Internals->Hexes->GetNumberOfHexahedra() : 0;
+}
+
+//------------------------------------------------------------------------------
 double vtkUnstructuredGridGPURayCastMapper::GetPreIntegrationTableBuildTime()
 {
   return this->Internals->FullTable->GetBuildTime();
@@ -285,6 +371,10 @@ double vtkUnstructuredGridGPURayCastMapper::GetPreIntegrationTableBuildTime()
 //------------------------------------------------------------------------------
 vtkIdType vtkUnstructuredGridGPURayCastMapper::GetNumberOfTetrahedra()
 {
+  if (this->Internals->Native)
+  {
+    return 0;
+  }
   auto& cells = *this->Internals->Cells;
   return cells.GetNumberOfTetrahedra() - cells.GetNumberOfDegenerateTetrahedra();
 }
@@ -321,11 +411,14 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateGeometry(vtkUnstructuredGridBase
   {
     sourceTime = std::max(sourceTime, input->GetMTime());
   }
-  if (in.GeometryInput == input && sourceTime <= in.GeometryTime.GetMTime())
+  const bool wantsNative = this->HexahedronMode != HEXAHEDRON_SUBDIVIDE;
+  if (in.GeometryInput == input && sourceTime <= in.GeometryTime.GetMTime() &&
+    in.GeometryWantsNative == wantsNative)
   {
     return in.GeometryValid;
   }
   in.GeometryInput = input;
+  in.GeometryWantsNative = wantsNative;
   in.GeometryTime.Modified();
   in.GeometryOnGPU = false;
   in.FieldArray = nullptr; // the field follows the geometry
@@ -333,6 +426,11 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateGeometry(vtkUnstructuredGridBase
   {
     in.InputCopy->DeepCopy(input);
     grid = in.InputCopy;
+  }
+  in.Native = false;
+  if (wantsNative && this->UpdateHexahedralGeometry(grid))
+  {
+    return in.GeometryValid;
   }
   in.GeometryValid = in.Cells->BuildGeometry(grid);
   vtkTetrahedralCellTextures& cells = *in.Cells;
@@ -376,6 +474,49 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateGeometry(vtkUnstructuredGridBase
 }
 
 //------------------------------------------------------------------------------
+bool vtkUnstructuredGridGPURayCastMapper::UpdateHexahedralGeometry(vtkUnstructuredGrid* grid)
+{
+  vtkInternals& in = *this->Internals;
+  vtkHexahedralCellTextures& hexes = *in.Hexes;
+  hexes.BuildGeometry(grid);
+  if (hexes.GetNumberOfHexahedra() == 0)
+  {
+    return false;
+  }
+  if (hexes.GetNumberOfOtherCells() > 0)
+  {
+    vtkWarningMacro(<< this->GetHexahedronModeAsString() << " needs a mesh of hexahedra only; "
+                    << hexes.GetNumberOfOtherCells() << " other cells: splitting all "
+                    << grid->GetNumberOfCells() << " cells into tetrahedra instead.");
+    return false;
+  }
+  if (6 * hexes.GetNumberOfHexahedra() > VTK_INT_MAX / 2 ||
+    hexes.GetBoundaryFaces().size() > (1u << 24))
+  {
+    vtkErrorMacro("Mesh too large: " << hexes.GetNumberOfHexahedra() << " hexahedra and "
+                                     << hexes.GetBoundaryFaces().size()
+                                     << " boundary triangles (limits 178956970 and 16777216).");
+    in.Native = true;
+    in.GeometryValid = false;
+    return true;
+  }
+  if (hexes.GetNumberOfQuadraticCells() > 0)
+  {
+    vtkWarningMacro(<< hexes.GetNumberOfQuadraticCells()
+                    << " quadratic (or higher-order) hexahedra are rendered through their "
+                       "linear corners only.");
+  }
+  if (hexes.GetNumberOfNonManifoldFaces() > 0)
+  {
+    vtkWarningMacro(<< hexes.GetNumberOfNonManifoldFaces()
+                    << " faces are shared by more than two hexahedra (non-manifold mesh).");
+  }
+  in.Native = true;
+  in.GeometryValid = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkUnstructuredGridGPURayCastMapper::UpdateField(vtkUnstructuredGridBase* input)
 {
   vtkInternals& in = *this->Internals;
@@ -410,6 +551,16 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateField(vtkUnstructuredGridBase* i
   scalars->GetRange(in.FieldRange, 0);
   in.FieldTime.Modified();
   in.FieldOnGPU = false;
+  if (in.Native)
+  {
+    in.Hexes->BuildField(scalars, cellFlag == 1, 0);
+    if (in.Hexes->GetNumberOfNaNScalars() > 0)
+    {
+      vtkWarningMacro(<< in.Hexes->GetNumberOfNaNScalars()
+                      << " hexahedra have NaN scalars; they are rendered empty.");
+    }
+    return true;
+  }
   in.Cells->BuildField(scalars, cellFlag == 1, 0);
   if (in.Cells->GetNumberOfNaNScalars() > 0)
   {
@@ -454,30 +605,41 @@ bool vtkUnstructuredGridGPURayCastMapper::UploadToGPU(vtkOpenGLRenderWindow* con
 {
   vtkInternals& in = *this->Internals;
   vtkTetrahedralCellTextures& cells = *in.Cells;
-  const size_t tets = static_cast<size_t>(cells.GetNumberOfTetrahedra());
+  vtkHexahedralCellTextures& hexes = *in.Hexes;
+  const size_t count = static_cast<size_t>(in.NumberOfCells());
   if (!in.GeometryOnGPU)
   {
-    bool ok = in.Planes.Upload(context, cells.GetFacePlanes().data(), 4 * tets, 4, VTK_FLOAT) &&
-      in.Neighbors.Upload(context, cells.GetNeighbors().data(), tets, 4, VTK_INT) &&
-      in.BoundaryFaces.Upload(context, cells.GetBoundaryFaces().data(),
-        cells.GetBoundaryFaces().size(), 1, VTK_INT) &&
-      in.BoundaryPoints->Upload(cells.GetBoundaryPoints(), vtkOpenGLBufferObject::ArrayBuffer) &&
+    // Tetrahedra: 4 plane texels and 1 neighbour texel each; hexahedra: 6
+    // corner texels and 2 neighbour texels each (the same buffer textures).
+    bool ok = in.Native
+      ? in.Planes.Upload(context, hexes.GetCorners().data(), 6 * count, 4, VTK_FLOAT) &&
+        in.Neighbors.Upload(context, hexes.GetNeighbors().data(), 2 * count, 4, VTK_INT)
+      : in.Planes.Upload(context, cells.GetFacePlanes().data(), 4 * count, 4, VTK_FLOAT) &&
+        in.Neighbors.Upload(context, cells.GetNeighbors().data(), count, 4, VTK_INT);
+    ok = ok &&
+      in.BoundaryFaces.Upload(context, in.BoundaryFaceCodes().data(),
+        in.BoundaryFaceCodes().size(), 1, VTK_INT) &&
+      in.BoundaryPoints->Upload(in.BoundaryPointCoordinates(), vtkOpenGLBufferObject::ArrayBuffer) &&
       in.BoundaryTriangles->Upload(
-        cells.GetBoundaryTriangles(), vtkOpenGLBufferObject::ElementArrayBuffer);
+        in.BoundaryTriangleIndices(), vtkOpenGLBufferObject::ElementArrayBuffer);
     if (!ok)
     {
-      vtkErrorMacro("Could not upload the mesh to the GPU (" << tets << " tetrahedra).");
+      vtkErrorMacro("Could not upload the mesh to the GPU ("
+        << count << (in.Native ? " hexahedra)." : " tetrahedra)."));
       return false;
     }
-    in.BoundaryBytes = sizeof(float) * cells.GetBoundaryPoints().size() +
-      sizeof(unsigned int) * cells.GetBoundaryTriangles().size();
+    in.BoundaryBytes = sizeof(float) * in.BoundaryPointCoordinates().size() +
+      sizeof(unsigned int) * in.BoundaryTriangleIndices().size();
     in.EntryProgram = nullptr; // re-bind the vertex array to the new buffer
     in.GeometryOnGPU = true;
     ++this->GeometryUploadCount;
   }
   if (!in.FieldOnGPU)
   {
-    if (!in.Field.Upload(context, cells.GetField().data(), tets, 4, VTK_FLOAT))
+    const bool uploaded = in.Native
+      ? in.Field.Upload(context, hexes.GetCoefficients().data(), 2 * count, 4, VTK_FLOAT)
+      : in.Field.Upload(context, cells.GetField().data(), count, 4, VTK_FLOAT);
+    if (!uploaded)
     {
       vtkErrorMacro("Could not upload the scalar field to the GPU.");
       return false;
@@ -542,8 +704,8 @@ bool vtkUnstructuredGridGPURayCastMapper::UploadPreIntegrationTable(vtkOpenGLRen
   {
     return true;
   }
-  in.FullTable->Build(in.ControlPoints, in.FieldRange[0], in.FieldRange[1],
-    in.Cells->GetMaximumEdgeLength(), n, n);
+  in.FullTable->Build(
+    in.ControlPoints, in.FieldRange[0], in.FieldRange[1], in.MaximumCellLength(), n, n);
   in.FullTableTexture->SetContext(context);
   in.FullTableTexture->SetMinificationFilter(vtkTextureObject::Linear);
   in.FullTableTexture->SetMagnificationFilter(vtkTextureObject::Linear);
@@ -611,15 +773,16 @@ bool vtkUnstructuredGridGPURayCastMapper::PrepareTargets(
   {
     cache->ReadyShaderProgram(in.EntryProgram);
   }
-  if (!in.MarchQuad || in.MarchQuadMode != this->IntegrationMode)
+  const int key = MarchShaderKey(this->IntegrationMode, in.Native, this->HexahedronMode);
+  if (!in.MarchQuad || in.MarchQuadKey != key)
   {
     if (in.MarchQuad)
     {
       in.MarchQuad->ReleaseGraphicsResources(context);
     }
-    in.MarchQuad.reset(
-      new vtkOpenGLQuadHelper(context, nullptr, MarchShader(this->IntegrationMode).c_str(), ""));
-    in.MarchQuadMode = this->IntegrationMode;
+    in.MarchQuad.reset(new vtkOpenGLQuadHelper(context, nullptr,
+      MarchShader(this->IntegrationMode, in.Native, this->HexahedronMode).c_str(), ""));
+    in.MarchQuadKey = key;
   }
   else
   {
@@ -756,7 +919,7 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
 
   // Matrices: local frame (mesh coordinates minus the centre of its bounds) to
   // clip space, and back, composed in double precision.
-  const double* origin = in.Cells->GetOrigin();
+  const double* origin = in.Origin();
   vtkNew<vtkMatrix4x4> localToClip;
   localToClip->Identity();
   for (int i = 0; i < 3; ++i)
@@ -773,11 +936,11 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
   ColumnMajor(localToClip, localToClipF);
   ColumnMajor(clipToLocal, clipToLocalF);
 
-  const vtkIdType tets = in.Cells->GetNumberOfTetrahedra();
+  const vtkIdType cells = in.NumberOfCells();
   const int maximumSteps = this->MaximumNumberOfSteps > 0
     ? this->MaximumNumberOfSteps
     : static_cast<int>(std::min<double>(
-        tets + 1.0, std::max(1024.0, 64.0 * std::cbrt(static_cast<double>(tets)))));
+        cells + 1.0, std::max(1024.0, 64.0 * std::cbrt(static_cast<double>(cells)))));
 
   // Save what we change; the Scoped objects restore it on return.
   vtkOpenGLState* state = context->GetState();
@@ -814,7 +977,7 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
   fbo->RemoveColorAttachment(1);
 
   const float terminationAlpha = static_cast<float>(this->TerminationOpacity);
-  const float exitTolerance = static_cast<float>(1e-5 * in.Cells->GetLength());
+  const float exitTolerance = static_cast<float>(1e-5 * in.Length());
   const float viewportSize[2] = { static_cast<float>(width), static_cast<float>(height) };
   vtkShaderProgram* march = in.MarchQuad->Program;
   int layer = 0;
@@ -855,8 +1018,8 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
     in.EntryVAO->Bind();
     in.BoundaryTriangles->Bind();
     glBeginQuery(GL_SAMPLES_PASSED, in.Query);
-    glDrawElements(GL_TRIANGLES,
-      static_cast<GLsizei>(in.Cells->GetBoundaryTriangles().size()), GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(in.BoundaryTriangleIndices().size()),
+      GL_UNSIGNED_INT, nullptr);
     glEndQuery(GL_SAMPLES_PASSED);
     in.BoundaryTriangles->Release();
     in.EntryVAO->Release();
@@ -887,6 +1050,12 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
       in.Accumulated[current], in.Exit[current] };
     std::vector<const char*> names = { "facePlanes", "neighbors", "field", "boundaryFaces",
       "controlPoints", "entryTriangle", "opaqueDepth", "previousAccumulated", "previousExit" };
+    if (in.Native)
+    {
+      names[0] = "hexCorners";
+      names[1] = "hexNeighbors";
+      names[2] = "hexCoefficients";
+    }
     if (in.PsiTextureSize)
     {
       textures.push_back(in.PsiTexture);
@@ -956,6 +1125,7 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "IntegrationMode: " << this->GetIntegrationModeAsString() << "\n";
+  os << indent << "HexahedronMode: " << this->GetHexahedronModeAsString() << "\n";
   os << indent << "MaximumNumberOfPeels: " << this->MaximumNumberOfPeels << "\n";
   os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
   os << indent << "PsiTableSize: " << this->PsiTableSize << "\n";

@@ -21,9 +21,11 @@
  * field when the scalars change; the transfer function when the volume
  * property changes; the Psi table once.
  *
- * Supported today: tetrahedra (other cells are reported and skipped),
- * composite blending, perspective and parallel cameras, the integration
- * modes of SetIntegrationMode().
+ * Supported today: tetrahedra, hexahedra (natively or split, see
+ * SetHexahedronMode()), voxels, wedges and pyramids (split into conforming
+ * tetrahedra), mixed freely; other cells are reported and skipped. Composite
+ * blending, perspective and parallel cameras, the integration modes of
+ * SetIntegrationMode().
  */
 #ifndef vtkUnstructuredGridGPURayCastMapper_h
 #define vtkUnstructuredGridGPURayCastMapper_h
@@ -35,6 +37,7 @@
 
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
+class vtkUnstructuredGrid;
 class vtkUnstructuredGridBase;
 class vtkVolumeProperty;
 class vtkVolume;
@@ -84,6 +87,44 @@ public:
   void SetIntegrationModeToAverageColor() { this->SetIntegrationMode(AVERAGE_COLOR); }
   const char* GetIntegrationModeAsString();
   ///@}
+
+  /**
+   * How hexahedra (also voxels and the corners of quadratic hexahedra) are
+   * rendered; see Documentation/algorithms.md.
+   * - HEXAHEDRON_ACCURATE: natively, with the trilinear field: along a ray a
+   *   cubic, split at its extrema and at every control point crossing (found
+   *   by safeguarded Newton), each piece integrated by Gauss-Legendre
+   *   quadrature with the exact attenuation integral (Miranda 2011, Ch. 3);
+   * - HEXAHEDRON_FAST: natively, the cubic split at its extrema, each
+   *   monotonic piece integrated as linear by the integration mode
+   *   (Miranda 2011, Ch. 4);
+   * - HEXAHEDRON_SUBDIVIDE (default): split into 6 tetrahedra that conform
+   *   across shared faces (vtkConformingTetrahedra.h).
+   * The native modes need a mesh of hexahedra only; a mixed mesh is split
+   * into tetrahedra whatever the mode (with a warning).
+   */
+  enum HexahedronModes
+  {
+    HEXAHEDRON_ACCURATE = 0,
+    HEXAHEDRON_FAST = 1,
+    HEXAHEDRON_SUBDIVIDE = 2
+  };
+
+  ///@{
+  /** The hexahedron mode (HexahedronModes), default HEXAHEDRON_SUBDIVIDE. */
+  virtual void SetHexahedronMode(int mode);
+  vtkGetMacro(HexahedronMode, int);
+  void SetHexahedronModeToAccurate() { this->SetHexahedronMode(HEXAHEDRON_ACCURATE); }
+  void SetHexahedronModeToFast() { this->SetHexahedronMode(HEXAHEDRON_FAST); }
+  void SetHexahedronModeToSubdivide() { this->SetHexahedronMode(HEXAHEDRON_SUBDIVIDE); }
+  const char* GetHexahedronModeAsString();
+  ///@}
+
+  /**
+   * Number of hexahedra the last frame rendered natively (0 when the mesh was
+   * split into tetrahedra).
+   */
+  vtkIdType GetNumberOfHexahedra();
 
   ///@{
   /**
@@ -169,6 +210,7 @@ protected:
   ~vtkUnstructuredGridGPURayCastMapper() override;
 
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
+  int HexahedronMode = HEXAHEDRON_SUBDIVIDE;
   int MaximumNumberOfPeels = 64;
   int MaximumNumberOfSteps = 0;
   int PsiTableSize = 512;
@@ -182,6 +224,8 @@ protected:
   // Stages of Render(), each refreshing one cache when its source changed.
   bool UpdateGeometry(vtkUnstructuredGridBase* input);
   bool UpdateField(vtkUnstructuredGridBase* input);
+  // Native hexahedra when the mesh has only hexahedra; false to split instead.
+  bool UpdateHexahedralGeometry(vtkUnstructuredGrid* grid);
   bool UpdateTransferFunction(vtkVolumeProperty* property);
   bool UploadToGPU(vtkOpenGLRenderWindow* context);
   bool UploadPreIntegrationTable(vtkOpenGLRenderWindow* context);

@@ -14,23 +14,8 @@
 uniform samplerBuffer facePlanes;
 uniform isamplerBuffer neighbors;
 uniform samplerBuffer field;
-uniform isamplerBuffer boundaryFaces; // boundary triangle -> 4 t + f
-uniform sampler2D entryTriangle;      // boundary triangle id + 1 per pixel
-uniform sampler2D opaqueDepth;
-uniform sampler2D previousAccumulated; // colour of the earlier peels
-uniform sampler2D previousExit;        // where the earlier peel stopped
-uniform int maximumSteps;
-uniform float terminationAlpha;
 
-in vec2 texCoord; // pixel centre in [0, 1]^2
-
-// Ping-pong targets: the accumulated premultiplied colour, this peel's
-// colour composited under the earlier peels', and the ray parameter where
-// this peel's march stopped (for the next entry pass).
-out vec4 fragOutput0;
-out vec4 fragOutput1;
-
-const float INFINITY = 3.0e38;
+//PPIRay::MarchCommon::Impl
 
 //PPIRay::TransferFunction::Impl
 
@@ -47,15 +32,12 @@ vec4 facePlane(int t, int f)
 void main()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 before = texelFetch(previousAccumulated, pixel, 0);
-  float entry = texelFetch(entryTriangle, pixel, 0).r;
-  fragOutput0 = before;
-  fragOutput1 = texelFetch(previousExit, pixel, 0);
-  if (entry < 0.5)
+  vec4 before;
+  int cellFace = enterPeel(pixel, before);
+  if (cellFace < 0)
   {
     return;
   }
-  int cellFace = texelFetch(boundaryFaces, int(entry) - 1).r;
   int cell = cellFace / 4;
   int entryFace = cellFace - 4 * cell;
 
@@ -65,13 +47,7 @@ void main()
   pixelRay(ndc, origin, direction);
 
   // Opaque geometry stops the ray at its depth.
-  float tStop = INFINITY;
-  float zOpaque = texelFetch(opaqueDepth, pixel, 0).r;
-  if (zOpaque < 1.0)
-  {
-    vec4 hit = clipToLocal * vec4(ndc, 2.0 * zOpaque - 1.0, 1.0);
-    tStop = dot(hit.xyz / hit.w - origin, direction);
-  }
+  float tStop = opaqueStop(opaqueDepth, pixel, ndc, origin, direction);
 
   vec4 plane = facePlane(cell, entryFace);
   float t = (plane.w - dot(plane.xyz, origin)) / min(dot(plane.xyz, direction), -1.0e-30);

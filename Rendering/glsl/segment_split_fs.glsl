@@ -2,11 +2,9 @@
 // pre-integration and exact-linear modes): the pieces between control points
 // have linear colour and attenuation; integratePiece() is the mode's integral.
 // A segment of length `len` on which s goes linearly from sFront to sBack:
-// split at every control point value strictly between them, each piece
-// integrated by integratePiece(). Walks the control points in the direction
-// s moves (index arithmetic, no re-lookup: a value landing exactly on a
-// control point cannot loop, the role of next_s_iso in Espinha & Celes,
-// Sec. 3.2). Returns the control interval at sBack.
+// split at every control point value strictly between them
+// (nextControlCrossing), each piece integrated by integratePiece(). Returns
+// the control interval at sBack.
 int integrateSegment(float sFront, float sBack, float len, int k, inout vec4 color)
 {
   int n = numberOfControlPoints;
@@ -17,22 +15,7 @@ int integrateSegment(float sFront, float sBack, float len, int k, inout vec4 col
   for (int i = 0; i <= n; ++i)
   {
     float sB;
-    int nextK;
-    if (ds > 0.0 && k + 1 < n && controlPointValue(k + 1) < sBack)
-    {
-      sB = controlPointValue(k + 1);
-      nextK = k + 1;
-    }
-    else if (ds < 0.0 && k >= 0 && controlPointValue(k) > sBack)
-    {
-      sB = controlPointValue(k);
-      nextK = k - 1;
-    }
-    else
-    {
-      sB = sBack;
-      nextK = k;
-    }
+    int nextK = nextControlCrossing(ds, sBack, k, sB);
     vec4 tfB = transferFunction(sB, k);
     float pieceLength = ds == 0.0 ? len : len * (sB - sA) / ds;
     integratePiece(tfA, tfB, pieceLength, color);

@@ -42,6 +42,28 @@ int controlInterval(float s, int k)
   return k;
 }
 
+// Walking s monotonically from the control interval k towards sEnd (ds: the
+// direction): the next control point value strictly before sEnd, in sB, and
+// the interval beyond it; or sEnd and k itself when none is left. Index
+// arithmetic, no re-lookup: a value landing exactly on a control point cannot
+// loop (the role of next_s_iso in Espinha & Celes 2005, Sec. 3.2).
+int nextControlCrossing(float ds, float sEnd, int k, out float sB)
+{
+  int n = numberOfControlPoints;
+  if (ds > 0.0 && k + 1 < n && controlPointValue(k + 1) < sEnd)
+  {
+    sB = controlPointValue(k + 1);
+    return k + 1;
+  }
+  if (ds < 0.0 && k >= 0 && controlPointValue(k) > sEnd)
+  {
+    sB = controlPointValue(k);
+    return k - 1;
+  }
+  sB = sEnd;
+  return k;
+}
+
 void compositeFrontToBack(inout vec4 color, vec3 emitted, float alpha)
 {
   color.rgb += (1.0 - color.a) * emitted;

@@ -16,6 +16,9 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkAppendFilter.h"
+#include "vtkImageData.h"
+#include "vtkCellType.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
 #include "vtkUnstructuredGridVolumeMapper.h"
@@ -95,6 +98,47 @@ inline double Blob(double x, double y, double z)
   return std::exp(-((x - 0.5) * (x - 0.5) + (y - 0.45) * (y - 0.45) + (z - 0.55) * (z - 0.55)) /
            0.12) +
     0.3 * x;
+}
+
+// The blob on an n x n x n block of voxels over [0, 1]^3 (vtkImageData through
+// vtkAppendFilter, VTK_VOXEL cells) and the same cells as VTK_HEXAHEDRON.
+struct VoxelBlock
+{
+  vtkSmartPointer<vtkUnstructuredGrid> Voxels;
+  vtkSmartPointer<vtkUnstructuredGrid> Hexahedra;
+};
+
+inline VoxelBlock BlobVoxelBlock(int n)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(n + 1, n + 1, n + 1);
+  image->SetSpacing(1.0 / n, 1.0 / n, 1.0 / n);
+  vtkNew<vtkDoubleArray> blob;
+  blob->SetName("blob");
+  for (vtkIdType p = 0; p < image->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    image->GetPoint(p, x);
+    blob->InsertNextValue(Blob(x[0], x[1], x[2]));
+  }
+  image->GetPointData()->SetScalars(blob);
+  vtkNew<vtkAppendFilter> append;
+  append->AddInputData(image);
+  append->Update();
+  VoxelBlock block;
+  block.Voxels = append->GetOutput();
+  block.Hexahedra = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  block.Hexahedra->SetPoints(block.Voxels->GetPoints());
+  block.Hexahedra->GetPointData()->ShallowCopy(block.Voxels->GetPointData());
+  for (vtkIdType c = 0; c < block.Voxels->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* v;
+    block.Voxels->GetCellPoints(c, npts, v);
+    const vtkIdType hex[8] = { v[0], v[1], v[3], v[2], v[4], v[5], v[7], v[6] };
+    block.Hexahedra->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+  }
+  return block;
 }
 
 // A smooth rainbow with smooth opacity over [lo, hi].

@@ -259,33 +259,9 @@ int TestGPURayCastMixedCells(int argc, char* argv[])
   const int result = vtkRegressionTestImage(scene.Window);
 
   // Voxels from image data against the same cells as hexahedra.
-  vtkNew<vtkImageData> image3d;
-  image3d->SetDimensions(N + 1, N + 1, N + 1);
-  image3d->SetSpacing(1.0 / N, 1.0 / N, 1.0 / N);
-  vtkNew<vtkDoubleArray> blob;
-  blob->SetName("blob");
-  for (vtkIdType p = 0; p < image3d->GetNumberOfPoints(); ++p)
-  {
-    double x[3];
-    image3d->GetPoint(p, x);
-    blob->InsertNextValue(ppiray_test::Blob(x[0], x[1], x[2]));
-  }
-  image3d->GetPointData()->SetScalars(blob);
-  vtkNew<vtkAppendFilter> append;
-  append->AddInputData(image3d);
-  append->Update();
-  vtkUnstructuredGrid* voxels = append->GetOutput();
-  vtkNew<vtkUnstructuredGrid> hexahedra;
-  hexahedra->SetPoints(voxels->GetPoints());
-  hexahedra->GetPointData()->ShallowCopy(voxels->GetPointData());
-  for (vtkIdType c = 0; c < voxels->GetNumberOfCells(); ++c)
-  {
-    vtkIdType npts;
-    const vtkIdType* v;
-    voxels->GetCellPoints(c, npts, v);
-    const vtkIdType hex[8] = { v[0], v[1], v[3], v[2], v[4], v[5], v[7], v[6] };
-    hexahedra->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
-  }
+  const auto block3d = ppiray_test::BlobVoxelBlock(N);
+  vtkUnstructuredGrid* voxels = block3d.Voxels;
+  vtkUnstructuredGrid* hexahedra = block3d.Hexahedra;
   if (voxels->GetCellType(0) != VTK_VOXEL)
   {
     errors += Fail("vtkAppendFilter did not produce voxels");

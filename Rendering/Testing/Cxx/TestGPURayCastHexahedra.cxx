@@ -1,0 +1,295 @@
+// Hexahedra rendered without subdivision (SetHexahedronMode), against the CPU
+// reference renderer, which integrates the isoparametric (trilinear) field.
+//  1. One parallelepiped (a cube turned 45 degrees about z, then sheared and
+//     stretched) with a saddle-shaped trilinear field and six thin opacity
+//     spikes (Miranda 2011, Fig. 5.2): HEXAHEDRON_ACCURATE within 1/255 per
+//     channel at p99 (its field is the exact one there); SUBDIVIDE (6
+//     tetrahedra, linear field in each) visibly further off.
+//  2. A 5x5x5 block with moved interior points (non-planar shared faces) and
+//     shuffled point ids: one peel (no gap between cells) and ACCURATE close
+//     to the reference (the cell-frame polynomial is not the isoparametric
+//     field of a distorted cell, so not to the last bit); a baseline image.
+//  3. Voxels (vtkImageData through vtkAppendFilter) render natively, exactly
+//     like the same cells given as hexahedra; a mixed mesh falls back to
+//     tetrahedra with a warning.
+
+#include "PPIRayImageCompare.h"
+#include "PPIRayTestScenes.h"
+#include "vtkAppendFilter.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCellType.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGridGPURayCastMapper.h"
+#include "vtkUnstructuredGridReferenceRenderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct Error
+{
+  double P99 = 0, Max = 0, Mean = 0;
+};
+
+// The reference image (RGB in [0, 1], NaN where the reference has none).
+// QuadratureTolerance 1e-5 (scalar deviation from linear per piece, relative
+// to the cell's range) keeps its error far below 1/255 at a tenth of the time
+// of the default 1e-6.
+vtkSmartPointer<vtkFloatArray> Reference(ppiray_test::Scene& scene, vtkUnstructuredGrid* grid, int w, int h)
+{
+  vtkNew<vtkUnstructuredGridReferenceRenderer> reference;
+  reference->SetInputData(grid);
+  reference->SetVolumeProperty(scene.Property);
+  reference->SetCamera(scene.Renderer->GetActiveCamera());
+  reference->SetImageSize(w, h);
+  reference->SetQuadratureTolerance(1e-5);
+  reference->Update();
+  return vtkFloatArray::SafeDownCast(reference->GetOutput()->GetPointData()->GetScalars());
+}
+
+// Per-channel |GPU - reference| in 1/255 over all pixels (black background).
+Error AgainstReference(ppiray_test::Scene& scene, vtkFloatArray* exact, int w, int h)
+{
+  const auto image = ppiray_test::ReadRGB(scene.Window);
+  std::vector<double> d;
+  for (int p = 0; p < w * h; ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double value = exact->GetComponent(p, c);
+      if (!std::isnan(value))
+      {
+        d.push_back(std::abs(image[3 * p + c] - 255.0 * value));
+      }
+    }
+  }
+  Error e;
+  if (d.empty())
+  {
+    return e;
+  }
+  e.Mean = std::accumulate(d.begin(), d.end(), 0.0) / d.size();
+  std::sort(d.begin(), d.end());
+  e.P99 = d[static_cast<size_t>(0.99 * (d.size() - 1))];
+  e.Max = d.back();
+  return e;
+}
+
+// Six spikes of width 0.01 over a faint ramp, on scalars in [0, 1].
+void SixSpikes(vtkVolumeProperty* property)
+{
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.0, 0.2, 0.4, 1.0);
+  color->AddRGBPoint(0.5, 0.3, 1.0, 0.3);
+  color->AddRGBPoint(1.0, 1.0, 0.3, 0.1);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.02);
+  for (int i = 1; i <= 6; ++i)
+  {
+    const double s = i / 7.0;
+    opacity->AddPoint(s - 0.005, 0.02);
+    opacity->AddPoint(s, 0.9);
+    opacity->AddPoint(s + 0.005, 0.02);
+  }
+  opacity->AddPoint(1.0, 0.02);
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetScalarOpacityUnitDistance(0.2);
+  property->ShadeOff();
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> OneParallelepiped()
+{
+  const double r = std::sqrt(0.5);
+  // Columns: the images of the unit axes (turned 45 degrees about z, sheared, stretched).
+  const double m[3][3] = { { 1.3 * r, -r, 0.4 }, { 1.3 * r, r, 0.1 }, { 0.0, 0.2, 0.9 } };
+  const double value[8] = { 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0, 0.0 }; // a saddle
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> scalars;
+  vtkIdType ids[8];
+  for (int i = 0; i < 8; ++i)
+  {
+    const double u[3] = { double((i == 1 || i == 2 || i == 5 || i == 6) ? 1 : 0),
+      double((i == 2 || i == 3 || i == 6 || i == 7) ? 1 : 0), double(i >= 4 ? 1 : 0) };
+    double x[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      x[k] = m[k][0] * u[0] + m[k][1] * u[1] + m[k][2] * u[2];
+    }
+    ids[i] = points->InsertNextPoint(x);
+    scalars->InsertNextValue(value[i]);
+  }
+  grid->SetPoints(points);
+  grid->GetPointData()->SetScalars(scalars);
+  grid->InsertNextCell(VTK_HEXAHEDRON, 8, ids);
+  return grid;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> DistortedBlock(int n)
+{
+  const int m = n + 1;
+  std::vector<vtkIdType> perm(m * m * m);
+  std::iota(perm.begin(), perm.end(), 0);
+  unsigned state = 4242u;
+  for (size_t i = perm.size() - 1; i > 0; --i)
+  {
+    state = state * 1664525u + 1013904223u;
+    std::swap(perm[i], perm[state % (i + 1)]);
+  }
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->SetNumberOfPoints(m * m * m);
+  vtkNew<vtkDoubleArray> scalars;
+  scalars->SetNumberOfTuples(m * m * m);
+  const double h = 1.0 / n;
+  for (int k = 0; k < m; ++k)
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i)
+      {
+        const bool interior = i > 0 && i < n && j > 0 && j < n && k > 0 && k < n;
+        const double d = interior ? 0.2 * h : 0.0;
+        const double x[3] = { i * h + d * std::sin(3.0 * j + k), j * h + d * std::cos(2.0 * k + i),
+          k * h + d * std::sin(i + 5.0 * j) };
+        points->SetPoint(perm[(k * m + j) * m + i], x);
+        scalars->SetValue(perm[(k * m + j) * m + i], ppiray_test::Blob(x[0], x[1], x[2]));
+      }
+  grid->SetPoints(points);
+  grid->GetPointData()->SetScalars(scalars);
+  auto id = [&](int i, int j, int k) { return perm[(k * m + j) * m + i]; };
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+      {
+        const vtkIdType hex[8] = { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
+          id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+          id(i, j + 1, k + 1) };
+        grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+      }
+  return grid;
+}
+
+int Fail(const std::string& what)
+{
+  std::cerr << "FAILED: " << what << "\n";
+  return 1;
+}
+}
+
+int TestGPURayCastHexahedra(int argc, char* argv[])
+{
+  int errors = 0;
+  const char* names[3] = { "ACCURATE", "FAST", "SUBDIVIDE" };
+
+  // 1. One parallelepiped, six spikes.
+  {
+    auto grid = OneParallelepiped();
+    ppiray_test::Scene scene(200, 200);
+    SixSpikes(scene.Property);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    scene.Show(mapper, grid, { 2.5, -1.8, 1.6 }, { 0.4, 0.8, 0.6 });
+    auto exact = Reference(scene, grid, 200, 200);
+    Error e[3];
+    for (int mode = 0; mode < 3; ++mode)
+    {
+      mapper->SetHexahedronMode(mode);
+      scene.Window->Render();
+      e[mode] = AgainstReference(scene, exact, 200, 200);
+      std::cout << "parallelepiped, " << names[mode] << ": p99 " << e[mode].P99 << " max "
+                << e[mode].Max << " mean " << e[mode].Mean << " (1/255); hexahedra "
+                << mapper->GetNumberOfHexahedra() << ", tetrahedra "
+                << mapper->GetNumberOfTetrahedra() << "\n";
+    }
+    if (e[0].P99 > 1.0 || mapper->GetHexahedronMode() != 2)
+    {
+      errors += Fail("HEXAHEDRON_ACCURATE off the exact field on a parallelepiped");
+    }
+    if (!(e[2].Max > 2.0 * std::max(e[0].Max, 1.0)))
+    {
+      errors += Fail("subdivision expected visibly less accurate than the native hexahedron");
+    }
+  }
+
+  // 2. A block with non-planar shared faces.
+  {
+    auto grid = DistortedBlock(5);
+    ppiray_test::Scene scene(200, 200);
+    ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.15);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    mapper->SetHexahedronModeToAccurate();
+    scene.Show(mapper, grid, { 2.0, 1.3, 2.4 }, { 0.5, 0.5, 0.5 });
+    scene.Window->Render();
+    const Error e = AgainstReference(scene, Reference(scene, grid, 200, 200), 200, 200);
+    std::cout << "distorted block, ACCURATE: peels " << mapper->GetNumberOfPeels() << ", p99 "
+              << e.P99 << " max " << e.Max << " mean " << e.Mean << ", GPU bytes "
+              << mapper->GetGPUMemorySize() << "\n";
+    if (mapper->GetNumberOfPeels() != 1 || mapper->GetNumberOfHexahedra() != 125)
+    {
+      errors += Fail("a gap between hexahedra (more than one peel) or hexahedra not native");
+    }
+    if (e.P99 > 2.0 || e.Max > 8.0)
+    {
+      errors += Fail("distorted block too far from the reference");
+    }
+    const int result = vtkRegressionTestImage(scene.Window);
+    errors += result == vtkRegressionTester::FAILED ? 1 : 0;
+  }
+
+  // 3. Voxels natively, like hexahedra; a mixed mesh falls back with a warning.
+  {
+    const auto block = ppiray_test::BlobVoxelBlock(4);
+    vtkUnstructuredGrid* voxels = block.Voxels;
+    vtkUnstructuredGrid* hexahedra = block.Hexahedra;
+    ppiray_test::Scene scene(150, 150);
+    ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.15);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    mapper->SetHexahedronModeToAccurate();
+    scene.Show(mapper, voxels, { 2.0, 1.3, 2.4 }, { 0.5, 0.5, 0.5 });
+    scene.Window->Render();
+    const auto a = ppiray_test::ReadRGB(scene.Window);
+    const vtkIdType native = mapper->GetNumberOfHexahedra();
+    mapper->SetInputData(hexahedra);
+    scene.Window->Render();
+    const auto b = ppiray_test::ReadRGB(scene.Window);
+    std::cout << "voxels: " << native << " native, against hexahedra max "
+              << ppiray_test::Compare(a, b).Max << "\n";
+    if (native != 64 || ppiray_test::Compare(a, b).Max > 0)
+    {
+      errors += Fail("voxels do not render natively like the same hexahedra");
+    }
+    // Mixed: a tetrahedron added.
+    vtkNew<vtkUnstructuredGrid> mixed;
+    mixed->DeepCopy(hexahedra);
+    const vtkIdType tet[4] = { 0, 1, 5, 25 };
+    mixed->InsertNextCell(VTK_TETRA, 4, tet);
+    std::string warnings;
+    vtkNew<vtkCallbackCommand> collect;
+    collect->SetClientData(&warnings);
+    collect->SetCallback([](vtkObject*, unsigned long, void* data, void* text) {
+      *static_cast<std::string*>(data) += static_cast<const char*>(text);
+    });
+    mapper->AddObserver(vtkCommand::WarningEvent, collect);
+    mapper->SetInputData(mixed);
+    scene.Window->Render();
+    std::cout << "mixed: hexahedra " << mapper->GetNumberOfHexahedra() << ", tetrahedra "
+              << mapper->GetNumberOfTetrahedra() << "\n";
+    if (mapper->GetNumberOfHexahedra() != 0 || mapper->GetNumberOfTetrahedra() != 6 * 64 + 1 ||
+      warnings.find("hexahedra only") == std::string::npos)
+    {
+      errors += Fail("a mixed mesh did not fall back to tetrahedra with a warning");
+    }
+  }
+  return errors == 0 ? 0 : 1;
+}

@@ -1,0 +1,190 @@
+//VTK::System::Dec
+// March pass for hexahedral meshes rendered without subdivision (Miranda
+// 2011): per pixel, from the cell a ray enters through (entry pass) to where
+// it leaves the mesh, one hexahedron at a time.
+//
+// Cell textures (vtkHexahedralCellTextures), in the mesh's local frame:
+//   hexCorners[6 h .. 6 h + 5]   the 8 corners, 24 floats, right-handed
+//   hexNeighbors[2 h]            cells through faces 0..3, [2 h + 1]: faces 4, 5,
+//                                the diagonal mask, 0 (-1: boundary)
+//   hexCoefficients[2 h .. + 1]  c0..c7 of the field in the cell frame (c0 = -3e38: empty)
+// Each face (q0, q1, q2, q3) of vtkHexahedron is two triangles split along
+// q0-q2, or q1-q3 when the face's bit is set: the same split as the
+// neighbour's, so the traversal is watertight on non-planar faces. The exit
+// is the nearest triangle the ray actually crosses; if rounding lets the ray
+// slip between the two (an edge), the nearest face plane it heads out of
+// (the convex-cell rule of the tetrahedral march).
+
+uniform samplerBuffer hexCorners;
+uniform isamplerBuffer hexNeighbors;
+uniform samplerBuffer hexCoefficients;
+
+//PPIRay::MarchCommon::Impl
+
+// vtkHexahedron's faces, wound outward.
+const int FACE[24] = int[24](0, 4, 7, 3, 1, 2, 6, 5, 0, 1, 5, 4, 3, 7, 6, 2, 0, 3, 2, 1, 4, 5, 6, 7);
+
+//PPIRay::TransferFunction::Impl
+
+//PPIRay::Integrate::Impl
+
+//PPIRay::Ray::Impl
+
+//PPIRay::HexahedronField::Impl
+
+//PPIRay::Hexahedron::Impl
+
+void loadCorners(int h, out vec3 p[8])
+{
+  vec4 t0 = texelFetch(hexCorners, 6 * h);
+  vec4 t1 = texelFetch(hexCorners, 6 * h + 1);
+  vec4 t2 = texelFetch(hexCorners, 6 * h + 2);
+  vec4 t3 = texelFetch(hexCorners, 6 * h + 3);
+  vec4 t4 = texelFetch(hexCorners, 6 * h + 4);
+  vec4 t5 = texelFetch(hexCorners, 6 * h + 5);
+  p[0] = t0.xyz;
+  p[1] = vec3(t0.w, t1.xy);
+  p[2] = vec3(t1.zw, t2.x);
+  p[3] = t2.yzw;
+  p[4] = t3.xyz;
+  p[5] = vec3(t3.w, t4.xy);
+  p[6] = vec3(t4.zw, t5.x);
+  p[7] = t5.yzw;
+}
+
+// Corner indices of triangle t (0, 1) of face f.
+ivec3 faceTriangle(int f, int t, int mask)
+{
+  bool second = ((mask >> f) & 1) == 1;
+  int q0 = FACE[4 * f], q1 = FACE[4 * f + 1], q2 = FACE[4 * f + 2], q3 = FACE[4 * f + 3];
+  if (second)
+  {
+    return t == 0 ? ivec3(q1, q2, q3) : ivec3(q1, q3, q0);
+  }
+  return t == 0 ? ivec3(q0, q1, q2) : ivec3(q0, q2, q3);
+}
+
+int neighborThrough(int h, int f)
+{
+  ivec4 n = texelFetch(hexNeighbors, 2 * h + f / 4);
+  int i = f - 4 * (f / 4);
+  return i == 0 ? n.x : (i == 1 ? n.y : (i == 2 ? n.z : n.w));
+}
+
+void main()
+{
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 before;
+  int code = enterPeel(pixel, before); // 12 h + 2 f + t
+  if (code < 0)
+  {
+    return;
+  }
+  int cell = code / 12;
+  int entryFace = (code - 12 * cell) / 2;
+  int entryHalf = code - 12 * cell - 2 * entryFace;
+
+  vec2 ndc = 2.0 * texCoord - 1.0;
+  vec3 origin, direction;
+  pixelRay(ndc, origin, direction);
+
+  // Opaque geometry stops the ray at its depth.
+  float tStop = opaqueStop(opaqueDepth, pixel, ndc, origin, direction);
+
+  vec3 p[8];
+  loadCorners(cell, p);
+  int mask = texelFetch(hexNeighbors, 2 * cell + 1).z;
+  ivec3 tri = faceTriangle(entryFace, entryHalf, mask);
+  vec3 n0 = cross(p[tri.y] - p[tri.x], p[tri.z] - p[tri.x]);
+  float t = dot(n0, p[tri.x] - origin) / min(dot(n0, direction), -1.0e-30);
+
+  int k = -1;
+  vec4 color = vec4(0.0);
+  float reached = t;
+  for (int step = 0; step < maximumSteps; ++step)
+  {
+    // Exit: the nearest crossed triangle (12 of them, minus the entry face's).
+    float tHit = INFINITY, tPlane = INFINITY;
+    int hitFace = -1, planeFace = -1;
+    for (int f = 0; f < 6; ++f)
+    {
+      if (f == entryFace)
+      {
+        continue;
+      }
+      for (int side = 0; side < 2; ++side)
+      {
+        ivec3 v = faceTriangle(f, side, mask);
+        vec3 a = p[v.x], b = p[v.y], c = p[v.z];
+        vec3 normal = cross(b - a, c - a);
+        float along = dot(normal, direction);
+        if (!(along > 0.0))
+        {
+          continue;
+        }
+        float tf = dot(normal, a - origin) / along;
+        if (tf < tPlane)
+        {
+          tPlane = tf;
+          planeFace = f;
+        }
+        vec3 x = origin + tf * direction;
+        float tolerance = -1.0e-5 * dot(normal, normal);
+        if (dot(cross(b - a, x - a), normal) >= tolerance &&
+          dot(cross(c - b, x - b), normal) >= tolerance &&
+          dot(cross(a - c, x - c), normal) >= tolerance && tf < tHit && tf >= t - 1.0e-6 * abs(t))
+        {
+          tHit = tf;
+          hitFace = f;
+        }
+      }
+    }
+    int exitFace = hitFace >= 0 ? hitFace : planeFace;
+    float tExit = hitFace >= 0 ? tHit : tPlane;
+    if (exitFace < 0)
+    {
+      break;
+    }
+    tExit = max(tExit, t);
+    float tEnd = min(tExit, tStop);
+    reached = tEnd;
+    vec4 c0 = texelFetch(hexCoefficients, 2 * cell);
+    if (c0.x > -1.0e38 && tEnd > t)
+    {
+      mat3 frame = mat3(p[1] - p[0], p[3] - p[0], p[4] - p[0]);
+      float det = determinant(frame);
+      float scale = length(frame[0]) * length(frame[1]) * length(frame[2]);
+      if (abs(det) > 1.0e-6 * scale)
+      {
+        mat3 toFrame = inverse(frame);
+        vec3 q = toFrame * (origin + t * direction - p[0]);
+        vec3 r = toFrame * direction;
+        vec4 w = rayCubic(c0, texelFetch(hexCoefficients, 2 * cell + 1), q, r);
+        k = integrateHexahedronSegment(w, tEnd - t, k, color);
+      }
+    }
+    if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
+    {
+      break;
+    }
+    int next = neighborThrough(cell, exitFace);
+    if (next < 0)
+    {
+      break;
+    }
+    entryFace = -1;
+    for (int f = 0; f < 6; ++f)
+    {
+      if (neighborThrough(next, f) == cell)
+      {
+        entryFace = f;
+      }
+    }
+    cell = next;
+    loadCorners(cell, p);
+    mask = texelFetch(hexNeighbors, 2 * cell + 1).z;
+    t = tExit;
+  }
+  fragOutput0 = before + (1.0 - before.a) * color;
+  fragOutput1 = vec4(reached);
+}
