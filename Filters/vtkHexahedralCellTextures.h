@@ -80,6 +80,12 @@ public:
   vtkGetMacro(NumberOfMirroredHexahedra, vtkIdType);
   vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
   vtkGetMacro(NumberOfNaNScalars, vtkIdType);
+  /**
+   * Degenerate hexahedra (BuildGeometry()): an edge shorter than 1e-6 of the
+   * cell's longest (pinch-outs), or a frame at corner 0 with
+   * |det M| <= 1e-6 |a| |b| |c| (no field along rays in the cell frame).
+   */
+  vtkGetMacro(NumberOfDegenerateHexahedra, vtkIdType);
   vtkGetMacro(NumberOfOtherCells, vtkIdType);
   vtkGetMacro(NumberOfQuadraticCells, vtkIdType);
 
@@ -108,6 +114,7 @@ protected:
   vtkIdType NumberOfMirroredHexahedra = 0;
   vtkIdType NumberOfNonManifoldFaces = 0;
   vtkIdType NumberOfNaNScalars = 0;
+  vtkIdType NumberOfDegenerateHexahedra = 0;
   vtkIdType NumberOfOtherCells = 0;
   vtkIdType NumberOfQuadraticCells = 0;
 

@@ -490,6 +490,14 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateHexahedralGeometry(vtkUnstructur
                     << grid->GetNumberOfCells() << " cells into tetrahedra instead.");
     return false;
   }
+  if (hexes.GetNumberOfDegenerateHexahedra() > 0)
+  {
+    vtkWarningMacro(<< hexes.GetNumberOfDegenerateHexahedra()
+                    << " degenerate hexahedra (collapsed edges, e.g. pinch-outs): splitting all "
+                    << grid->GetNumberOfCells() << " cells into tetrahedra instead of "
+                    << this->GetHexahedronModeAsString() << ".");
+    return false;
+  }
   if (6 * hexes.GetNumberOfHexahedra() > VTK_INT_MAX / 2 ||
     hexes.GetBoundaryFaces().size() > (1u << 24))
   {

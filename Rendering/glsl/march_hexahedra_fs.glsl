@@ -71,6 +71,19 @@ int neighborThrough(int h, int f)
   return i == 0 ? n.x : (i == 1 ? n.y : (i == 2 ? n.z : n.w));
 }
 
+// Whether the ray reaches triangle v (corner indices into p) at parameter tf:
+// the crossing point is on the inner side of its three edges (with a
+// relative tolerance, so that an edge hit counts for both triangles).
+bool crossesTriangle(vec3 p[8], ivec3 v, vec3 origin, vec3 direction, float tf)
+{
+  vec3 a = p[v.x], b = p[v.y], c = p[v.z];
+  vec3 normal = cross(b - a, c - a);
+  vec3 x = origin + tf * direction;
+  float tolerance = -1.0e-5 * dot(normal, normal);
+  return dot(cross(b - a, x - a), normal) >= tolerance &&
+    dot(cross(c - b, x - b), normal) >= tolerance && dot(cross(a - c, x - c), normal) >= tolerance;
+}
+
 void main()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -103,36 +116,45 @@ void main()
   float reached = t;
   for (int step = 0; step < maximumSteps; ++step)
   {
-    // Exit: the nearest crossed triangle (12 of them, minus the entry face's).
-    float tHit = INFINITY, tPlane = INFINITY;
-    int hitFace = -1, planeFace = -1;
+    // Exit: the nearest face plane the ray heads out of (the convex-cell
+    // rule), accepted if the ray crosses that triangle; else (a concave fold
+    // of a non-planar face) the nearest triangle actually crossed.
+    float tPlane = INFINITY;
+    int planeFace = -1, planeSide = 0;
     for (int f = 0; f < 6; ++f)
     {
-      if (f == entryFace)
-      {
-        continue;
-      }
-      for (int side = 0; side < 2; ++side)
+      for (int side = 0; side < 2 && f != entryFace; ++side)
       {
         ivec3 v = faceTriangle(f, side, mask);
-        vec3 a = p[v.x], b = p[v.y], c = p[v.z];
-        vec3 normal = cross(b - a, c - a);
+        vec3 normal = cross(p[v.y] - p[v.x], p[v.z] - p[v.x]);
         float along = dot(normal, direction);
-        if (!(along > 0.0))
-        {
-          continue;
-        }
-        float tf = dot(normal, a - origin) / along;
-        if (tf < tPlane)
+        float tf = dot(normal, p[v.x] - origin) / along;
+        if (along > 0.0 && tf < tPlane)
         {
           tPlane = tf;
           planeFace = f;
+          planeSide = side;
         }
-        vec3 x = origin + tf * direction;
-        float tolerance = -1.0e-5 * dot(normal, normal);
-        if (dot(cross(b - a, x - a), normal) >= tolerance &&
-          dot(cross(c - b, x - b), normal) >= tolerance &&
-          dot(cross(a - c, x - c), normal) >= tolerance && tf < tHit && tf >= t - 1.0e-6 * abs(t))
+      }
+    }
+    float tHit = INFINITY;
+    int hitFace = -1;
+    if (planeFace >= 0 && tPlane >= t - 1.0e-6 * abs(t) &&
+      crossesTriangle(p, faceTriangle(planeFace, planeSide, mask), origin, direction, tPlane))
+    {
+      tHit = tPlane;
+      hitFace = planeFace;
+    }
+    for (int f = 0; f < 6 && hitFace < 0; ++f)
+    {
+      for (int side = 0; side < 2 && f != entryFace; ++side)
+      {
+        ivec3 v = faceTriangle(f, side, mask);
+        vec3 normal = cross(p[v.y] - p[v.x], p[v.z] - p[v.x]);
+        float along = dot(normal, direction);
+        float tf = dot(normal, p[v.x] - origin) / along;
+        if (along > 0.0 && tf < tHit && tf >= t - 1.0e-6 * abs(t) &&
+          crossesTriangle(p, v, origin, direction, tf))
         {
           tHit = tf;
           hitFace = f;
@@ -172,14 +194,10 @@ void main()
     {
       break;
     }
-    entryFace = -1;
-    for (int f = 0; f < 6; ++f)
-    {
-      if (neighborThrough(next, f) == cell)
-      {
-        entryFace = f;
-      }
-    }
+    ivec4 back0 = texelFetch(hexNeighbors, 2 * next);
+    ivec4 back1 = texelFetch(hexNeighbors, 2 * next + 1);
+    entryFace = back0.x == cell ? 0 : back0.y == cell ? 1 : back0.z == cell ? 2
+      : back0.w == cell ? 3 : back1.x == cell ? 4 : back1.y == cell ? 5 : -1;
     cell = next;
     loadCorners(cell, p);
     mask = texelFetch(hexNeighbors, 2 * cell + 1).z;

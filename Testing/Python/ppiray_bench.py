@@ -33,6 +33,9 @@ METHODS = [
     ("ppiray", "FULL_PRE_INTEGRATION table=64", {"mode": 2, "table": 64}),
     ("ppiray", "FULL_PRE_INTEGRATION table=128", {"mode": 2, "table": 128}),
     ("ppiray", "AVERAGE_COLOR", {"mode": 3}),
+    ("ppiray", "HEXAHEDRON_ACCURATE", {"mode": 0, "hex": 0}),
+    ("ppiray", "HEXAHEDRON_FAST", {"mode": 0, "hex": 1}),
+    ("ppiray", "HEXAHEDRON_SUBDIVIDE", {"mode": 0, "hex": 2}),
     ("vtkProjectedTetrahedraMapper", "", {}),
     ("vtkUnstructuredGridVolumeRayCastMapper", "default integrator", {}),
     ("vtkUnstructuredGridVolumeRayCastMapper", "partial pre-integration", {"ppi": True}),
@@ -68,6 +71,8 @@ def run_worker(args):
     from vtkmodules.util.numpy_support import vtk_to_numpy
     from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 
+    import ppiray_bench_scenes
+
     method, settings = args.worker_method, json.loads(args.worker_settings)
     extra = {}
     if method == "ppiray":
@@ -77,6 +82,7 @@ def run_worker(args):
         mapper.SetIntegrationMode(settings["mode"])
         mapper.SetPsiTableSize(settings.get("psi", 512))
         mapper.SetPreIntegrationTableSize(settings.get("table", 64))
+        mapper.SetHexahedronMode(settings.get("hex", 2))
     elif method == "vtkProjectedTetrahedraMapper":
         from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLProjectedTetrahedraMapper
 
@@ -107,6 +113,10 @@ def run_worker(args):
             args.scene, args, settings["dims"], make_window)
     else:
         grid, prop, window, renderer = make_window(args.scene, args, mapper)
+        if method != "ppiray" and args.scene in ppiray_bench_scenes.HEXAHEDRAL:
+            # VTK's unstructured mappers take tetrahedra only.
+            grid = ppiray_bench_scenes.tetrahedralized(grid)
+            mapper.SetInputData(grid)
     times = []
     for index in range(args.views):
         view(renderer, index, args.views)
@@ -127,6 +137,8 @@ def run_worker(args):
     result = {"ms": times, "cells": grid.GetNumberOfCells(), "gpu_bytes": "", **extra}
     if method == "ppiray":
         result["gpu_bytes"] = mapper.GetGPUMemorySize()
+        result["hexahedra"] = mapper.GetNumberOfHexahedra()
+        result["tetrahedra"] = mapper.GetNumberOfTetrahedra()
         if settings["mode"] == 2:
             result["table_build_s"] = mapper.GetPreIntegrationTableBuildTime()
     print("RESULT " + json.dumps(result))
@@ -199,8 +211,15 @@ def main():
         os.makedirs(folder, exist_ok=True)
         print("scene %s" % scene_name, flush=True)
         references = reference_views(scene_name, args, folder)
+        import ppiray_bench_scenes
+
+        hexahedral = scene_name in ppiray_bench_scenes.HEXAHEDRAL
         for method, mode, settings in METHODS:
             if args.methods != "all" and method not in args.methods.split(","):
+                continue
+            # Hexahedral scenes: our three hexahedron modes (with the default
+            # integration) and the peers; tetrahedral scenes: the rest.
+            if method == "ppiray" and ("hex" in settings) != hexahedral:
                 continue
             out = os.path.join(folder, tag_of(method, mode))
             os.makedirs(out, exist_ok=True)
@@ -233,6 +252,12 @@ def main():
                         notes.append("table built in %.3f s" % result["table_build_s"])
                     if "resample_s" in result:
                         notes.append("resample %.2f s" % result["resample_s"])
+                    if result.get("hexahedra"):
+                        notes.append("%d hexahedra natively, %.0f GPU B/hexahedron incl. targets"
+                                     % (result["hexahedra"],
+                                        result["gpu_bytes"] / result["hexahedra"]))
+                    elif hexahedral and result.get("tetrahedra"):
+                        notes.append("%d tetrahedra" % result["tetrahedra"])
                     row["notes"] = "; ".join(notes)
             except subprocess.TimeoutExpired:
                 row["status"] = "timed out after %d s" % args.timeout
@@ -261,7 +286,8 @@ def main():
     return 0
 
 
-NAMES_ORDER = ["wavelet", "graded", "graded-spikes", "graded-opaque", "bluntfin", "loxpost"]
+NAMES_ORDER = ["wavelet", "graded", "graded-spikes", "graded-opaque", "bluntfin", "loxpost",
+               "bluntfin-hex", "bluntfin-hex-spikes", "loxpost-hex"]
 
 
 def tag_of(method, mode):

@@ -6,6 +6,10 @@
 (d) graded-opaque  the same mesh, nearly opaque (tau D >> 1: Psi near gamma -> 1)
 (e) bluntfin       Blunt Fin (PLOT3D, Density), tetrahedralized: 187,395 tetrahedra
     loxpost        LOX Post (PLOT3D, function 110 = pressure), tetrahedralized: 513,375
+(f) bluntfin-hex   Blunt Fin as it is: 37,479 hexahedra (VTK's tetrahedral mappers get
+                   the vtkDataSetTriangleFilter output)
+    bluntfin-hex-spikes  the same, 70 control points with one-value-wide spikes
+    loxpost-hex    LOX Post as it is: 102,675 hexahedra
 """
 import os
 
@@ -17,7 +21,9 @@ from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkVolumePrope
 
 from ppiray_scene import load, volume_property
 
-NAMES = ["wavelet", "graded", "graded-spikes", "graded-opaque", "bluntfin", "loxpost"]
+NAMES = ["wavelet", "graded", "graded-spikes", "graded-opaque", "bluntfin", "loxpost",
+         "bluntfin-hex", "bluntfin-hex-spikes", "loxpost-hex"]
+HEXAHEDRAL = {"bluntfin-hex", "bluntfin-hex-spikes", "loxpost-hex"}
 
 DERIVED = {
     "wavelet": "RTData",
@@ -26,6 +32,9 @@ DERIVED = {
     "graded-opaque": "s",
     "bluntfin": "Density",
     "loxpost": "pressure (PLOT3D function 110)",
+    "bluntfin-hex": "Density",
+    "bluntfin-hex-spikes": "Density",
+    "loxpost-hex": "pressure (PLOT3D function 110)",
 }
 
 
@@ -38,7 +47,24 @@ def _tetrahedralize(dataset):
     return grid
 
 
-def _plot3d(folder, xyz, q, function):
+def _hexahedra(dataset):
+    """A structured grid as an unstructured grid of hexahedra."""
+    from vtkmodules.vtkFiltersCore import vtkAppendFilter
+
+    append = vtkAppendFilter()
+    append.AddInputData(dataset)
+    append.Update()
+    grid = vtkUnstructuredGrid()
+    grid.ShallowCopy(append.GetOutput())
+    return grid
+
+
+def tetrahedralized(grid):
+    """What VTK's tetrahedral mappers get of a hexahedral scene."""
+    return _tetrahedralize(grid)
+
+
+def _plot3d(folder, xyz, q, function, hexahedra=False):
     reader = vtkMultiBlockPLOT3DReader()
     reader.SetXYZFileName(os.path.join(folder, xyz))
     reader.SetQFileName(os.path.join(folder, q))
@@ -49,7 +75,7 @@ def _plot3d(folder, xyz, q, function):
     block = reader.GetOutput().GetBlock(0)
     name = "Density" if function in (None, 100) else block.GetPointData().GetArrayName(
         block.GetPointData().GetNumberOfArrays() - 1)
-    grid = _tetrahedralize(block)
+    grid = _hexahedra(block) if hexahedra else _tetrahedralize(block)
     grid.GetPointData().SetActiveScalars(name)
     return grid
 
@@ -116,12 +142,15 @@ def build(name, root, data_root, wavelet_extent=16):
         if name == "graded-opaque":
             return grid, _opaque_property(lo, hi)
         return grid, volume_property(grid)
-    folder = {"bluntfin": "bluntfin", "loxpost": "lox_post"}[name]
-    path = os.path.join(data_root, folder)
+    hexahedra = name in HEXAHEDRAL
+    path = os.path.join(data_root, "bluntfin" if name.startswith("bluntfin") else "lox_post")
     if not os.path.isdir(path):
         return None
-    if name == "bluntfin":
-        grid = _plot3d(path, "bluntfinxyz.bin", "bluntfinq.bin", None)
+    if name.startswith("bluntfin"):
+        grid = _plot3d(path, "bluntfinxyz.bin", "bluntfinq.bin", None, hexahedra)
     else:
-        grid = _plot3d(path, "postxyz.bin", "postq.bin", 110)
+        grid = _plot3d(path, "postxyz.bin", "postq.bin", 110, hexahedra)
+    if name.endswith("-spikes"):
+        lo, hi = grid.GetPointData().GetScalars().GetRange()
+        return grid, _spiky_property(lo, hi)
     return grid, volume_property(grid)
