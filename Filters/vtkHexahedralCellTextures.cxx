@@ -69,7 +69,7 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->BoundaryFaces.clear();
   this->NumberOfMirroredHexahedra = 0;
   this->NumberOfNonManifoldFaces = 0;
-  this->NumberOfDegenerateHexahedra = 0;
+  this->NumberOfSingularFrames = 0;
   this->NumberOfOtherCells = 0;
   this->NumberOfQuadraticCells = 0;
   if (!grid || !grid->GetPoints() || !grid->GetCells())
@@ -134,29 +134,18 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     }
   }
   this->MaximumCellDiameter = std::sqrt(diameter2);
-  this->NumberOfDegenerateHexahedra = 0;
+  this->NumberOfSingularFrames = 0;
   for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
   {
-    // Collapsed edges, and the shader's frame test |det M| <= 1e-6 |a| |b| |c|
-    // (march_hexahedra_fs.glsl).
+    // The shader's test |det M| <= 1e-6 |a| |b| |c| (march_hexahedra_fs.glsl).
     const vtkIdType* c = this->CornerIds.data() + 8 * h;
-    double shortest = VTK_DOUBLE_MAX, longest = 0.0;
-    for (int e = 0; e < 12; ++e)
-    {
-      const vtkIdType* ends = vtkHexahedron::GetEdgeArray(e);
-      const double length2 =
-        vtkMath::Distance2BetweenPoints(local + 3 * c[ends[0]], local + 3 * c[ends[1]]);
-      shortest = std::min(shortest, length2);
-      longest = std::max(longest, length2);
-    }
     double a[3], b[3], d[3];
     vtkMath::Subtract(local + 3 * c[1], local + 3 * c[0], a);
     vtkMath::Subtract(local + 3 * c[3], local + 3 * c[0], b);
     vtkMath::Subtract(local + 3 * c[4], local + 3 * c[0], d);
     const double scale = vtkMath::Norm(a) * vtkMath::Norm(b) * vtkMath::Norm(d);
-    const bool collapsed = !(shortest > 1e-12 * longest); // lengths squared: 1e-6
     const bool singular = !(std::abs(vtkMath::Determinant3x3(a, b, d)) > 1e-6 * scale);
-    this->NumberOfDegenerateHexahedra += (collapsed || singular) ? 1 : 0;
+    this->NumberOfSingularFrames += singular ? 1 : 0;
   }
 
   // Faces matched by their sorted point ids; diagonals by the smallest id.
@@ -302,7 +291,7 @@ void vtkHexahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfMirroredHexahedra: " << this->NumberOfMirroredHexahedra << "\n";
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
   os << indent << "NumberOfNaNScalars: " << this->NumberOfNaNScalars << "\n";
-  os << indent << "NumberOfDegenerateHexahedra: " << this->NumberOfDegenerateHexahedra << "\n";
+  os << indent << "NumberOfSingularFrames: " << this->NumberOfSingularFrames << "\n";
   os << indent << "NumberOfOtherCells: " << this->NumberOfOtherCells << "\n";
   os << indent << "NumberOfQuadraticCells: " << this->NumberOfQuadraticCells << "\n";
 }

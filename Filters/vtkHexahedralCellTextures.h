@@ -81,11 +81,12 @@ public:
   vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
   vtkGetMacro(NumberOfNaNScalars, vtkIdType);
   /**
-   * Degenerate hexahedra (BuildGeometry()): an edge shorter than 1e-6 of the
-   * cell's longest (pinch-outs), or a frame at corner 0 with
-   * |det M| <= 1e-6 |a| |b| |c| (no field along rays in the cell frame).
+   * Hexahedra whose frame at corner 0 is singular, |det M| <= 1e-6 |a| |b| |c|
+   * (an edge at corner 0 collapsed, or the three flat): the field cannot be
+   * expressed in that frame (BuildGeometry()). Collapsed edges elsewhere
+   * (pinch-outs) are fine.
    */
-  vtkGetMacro(NumberOfDegenerateHexahedra, vtkIdType);
+  vtkGetMacro(NumberOfSingularFrames, vtkIdType);
   vtkGetMacro(NumberOfOtherCells, vtkIdType);
   vtkGetMacro(NumberOfQuadraticCells, vtkIdType);
 
@@ -114,7 +115,7 @@ protected:
   vtkIdType NumberOfMirroredHexahedra = 0;
   vtkIdType NumberOfNonManifoldFaces = 0;
   vtkIdType NumberOfNaNScalars = 0;
-  vtkIdType NumberOfDegenerateHexahedra = 0;
+  vtkIdType NumberOfSingularFrames = 0;
   vtkIdType NumberOfOtherCells = 0;
   vtkIdType NumberOfQuadraticCells = 0;
 

@@ -490,10 +490,11 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateHexahedralGeometry(vtkUnstructur
                     << grid->GetNumberOfCells() << " cells into tetrahedra instead.");
     return false;
   }
-  if (hexes.GetNumberOfDegenerateHexahedra() > 0)
+  if (hexes.GetNumberOfSingularFrames() > 0)
   {
-    vtkWarningMacro(<< hexes.GetNumberOfDegenerateHexahedra()
-                    << " degenerate hexahedra (collapsed edges, e.g. pinch-outs): splitting all "
+    vtkWarningMacro(<< hexes.GetNumberOfSingularFrames()
+                    << " hexahedra have no frame at corner 0 (an edge there collapsed): "
+                       "splitting all "
                     << grid->GetNumberOfCells() << " cells into tetrahedra instead of "
                     << this->GetHexahedronModeAsString() << ".");
     return false;
