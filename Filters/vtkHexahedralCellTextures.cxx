@@ -37,6 +37,50 @@ double Handedness(const double* local, const vtkIdType c[8])
   return vtkMath::Determinant3x3(a, b, d) + vtkMath::Determinant3x3(e, f, g);
 }
 
+// The three edge neighbours of each corner, ordered so that they span a
+// right-handed frame in a valid hexahedron (as vtkHexahedronCoefficients).
+const int CornerFrames[8][3] = { { 1, 3, 4 }, { 2, 0, 5 }, { 3, 1, 6 }, { 0, 2, 7 },
+  { 7, 5, 0 }, { 4, 6, 1 }, { 5, 7, 2 }, { 6, 4, 3 } };
+// Corner positions on the unit cube, bits (x, y, z), in VTK_HEXAHEDRON order.
+const int CornerBits[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
+
+// |det[a b c]| / (|a| |b| |c|) of the frame at corner i: 1 for a right angle
+// corner, 0 for a collapsed or flat one.
+double FrameQuality(const double* local, const vtkIdType c[8], int i)
+{
+  double e[3][3];
+  for (int k = 0; k < 3; ++k)
+  {
+    vtkMath::Subtract(local + 3 * c[CornerFrames[i][k]], local + 3 * c[i], e[k]);
+  }
+  const double scale = vtkMath::Norm(e[0]) * vtkMath::Norm(e[1]) * vtkMath::Norm(e[2]);
+  return scale > 0 ? std::abs(vtkMath::Determinant3x3(e[0], e[1], e[2])) / scale : 0.0;
+}
+
+// Renumbers the corners by the rotation of the cube that takes corner `i` to
+// corner 0 and its frame (CornerFrames[i]) to the axes: the same cell, still
+// right-handed, with its frame at corner i.
+void MoveFrameToCorner(vtkIdType c[8], int i)
+{
+  int index[8]; // corner of a cube position
+  for (int q = 0; q < 8; ++q)
+  {
+    index[CornerBits[q]] = q;
+  }
+  const int origin = CornerBits[i];
+  const int axis[3] = { CornerBits[CornerFrames[i][0]] ^ origin,
+    CornerBits[CornerFrames[i][1]] ^ origin, CornerBits[CornerFrames[i][2]] ^ origin };
+  vtkIdType moved[8];
+  for (int q = 0; q < 8; ++q)
+  {
+    const int b = CornerBits[q];
+    const int position =
+      origin ^ ((b & 1) ? axis[0] : 0) ^ ((b & 2) ? axis[1] : 0) ^ ((b & 4) ? axis[2] : 0);
+    moved[q] = c[index[position]];
+  }
+  std::copy(moved, moved + 8, c);
+}
+
 struct FaceKey
 {
   std::array<vtkIdType, 4> Ids; // sorted
@@ -104,6 +148,17 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     {
       std::rotate(c, c + 4, c + 8); // swap bottom and top
       ++this->NumberOfMirroredHexahedra;
+    }
+    // The cell frame at the best-shaped corner when corner 0 is collapsed or
+    // flat (pinch-outs): a rotation of the corner numbering.
+    if (FrameQuality(local, c, 0) < 1e-3)
+    {
+      int best = 0;
+      for (int i = 1; i < 8; ++i)
+      {
+        best = FrameQuality(local, c, i) > FrameQuality(local, c, best) ? i : best;
+      }
+      MoveFrameToCorner(c, best);
     }
     this->CellIds.push_back(cellId);
     this->CornerIds.insert(this->CornerIds.end(), c, c + 8);

@@ -81,10 +81,11 @@ public:
   vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
   vtkGetMacro(NumberOfNaNScalars, vtkIdType);
   /**
-   * Hexahedra whose frame at corner 0 is singular, |det M| <= 1e-6 |a| |b| |c|
-   * (an edge at corner 0 collapsed, or the three flat): the field cannot be
-   * expressed in that frame (BuildGeometry()). Collapsed edges elsewhere
-   * (pinch-outs) are fine.
+   * Hexahedra whose frame is singular, |det M| <= 1e-6 |a| |b| |c|, at every
+   * corner (flat cells): the field cannot be expressed in a cell frame
+   * (BuildGeometry()). When only corner 0 is collapsed or flat (pinch-outs),
+   * the corners are renumbered (a rotation of the cube, still right-handed)
+   * so that the best-shaped corner becomes corner 0.
    */
   vtkGetMacro(NumberOfSingularFrames, vtkIdType);
   vtkGetMacro(NumberOfOtherCells, vtkIdType);

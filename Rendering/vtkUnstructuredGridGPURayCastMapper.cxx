@@ -493,8 +493,7 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateHexahedralGeometry(vtkUnstructur
   if (hexes.GetNumberOfSingularFrames() > 0)
   {
     vtkWarningMacro(<< hexes.GetNumberOfSingularFrames()
-                    << " hexahedra have no frame at corner 0 (an edge there collapsed): "
-                       "splitting all "
+                    << " hexahedra have no frame at any corner (flat cells): splitting all "
                     << grid->GetNumberOfCells() << " cells into tetrahedra instead of "
                     << this->GetHexahedronModeAsString() << ".");
     return false;
