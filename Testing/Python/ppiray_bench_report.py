@@ -100,7 +100,8 @@ def write_reports(rows, args):
         reference = np.rint(np.load(os.path.join(folder, "reference_view0.npy")))
         shown = [("reference", reference)]
         for r in rows:
-            wanted = (r["method"] == "ppiray" and "default" in r["mode"]) or (
+            ours = "default" in r["mode"] or "HEXAHEDRON" in r["mode"]
+            wanted = (r["method"] == "ppiray" and ours) or (
                 r["method"] != "ppiray" and r["mode"] in ("", "default integrator", "128^3"))
             path = os.path.join(r["images"], "view0.npy")
             if r["scene"] == scene and wanted and r["status"] == "ok" and os.path.exists(path):
