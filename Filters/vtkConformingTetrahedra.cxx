@@ -138,22 +138,14 @@ int TetrahedraPerCell(int linearCellType)
 void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, TetrahedralSplit& split)
 {
   split = TetrahedralSplit();
-  vtkCellArray* cells = grid ? grid->GetCells() : nullptr;
-  if (!cells)
+  if (!grid)
   {
     return;
   }
   const vtkIdType numberOfCells = grid->GetNumberOfCells();
   split.Tets.reserve(4 * numberOfCells);
   split.CellIds.reserve(numberOfCells);
-  auto iter = vtk::TakeSmartPointer(cells->NewIterator());
-  vtkIdType cellId = 0;
-  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cellId)
-  {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    iter->GetCurrentCell(npts, pts);
-    const int type = grid->GetCellType(cellId);
+  ForEachCell(grid, [&](vtkIdType cellId, int type, vtkIdType npts, const vtkIdType* pts) {
     const LinearShape shape = LinearShapeOf(type);
     const bool accepted = shape.Type != 0 && npts >= shape.Corners &&
       (!tetrahedraOnly || (type == VTK_TETRA && npts == 4));
@@ -173,7 +165,7 @@ void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, Tetrahe
         split.Unsupported.push_back(type);
         split.Unsupported.push_back(1);
       }
-      continue;
+      return;
     }
     const size_t before = split.Tets.size();
     vtkIdType corners[8];
@@ -200,6 +192,6 @@ void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, Tetrahe
     split.CellIds.insert(split.CellIds.end(), (split.Tets.size() - before) / 4, cellId);
     split.NumberOfSplitCells += shape.Type != VTK_TETRA ? 1 : 0;
     split.NumberOfQuadraticCells += shape.HigherOrder ? 1 : 0;
-  }
+  });
 }
 }

@@ -24,15 +24,37 @@
 #define vtkConformingTetrahedra_h
 
 #include "ppirayFiltersModule.h" // for export macro
+#include "vtkCellArray.h"              // for ForEachCell
+#include "vtkCellArrayIterator.h"      // for ForEachCell
 #include "vtkCellType.h"               // for VTK_VOXEL
+#include "vtkSmartPointer.h"           // for ForEachCell
 #include "vtkType.h"
+#include "vtkUnstructuredGrid.h"       // for ForEachCell
 
 #include <vector> // for std::vector
 
-class vtkUnstructuredGrid;
-
 namespace ppiray
 {
+/** visit(cellId, cellType, npts, pts) for every cell of `grid`, in order. */
+template <typename Visit>
+void ForEachCell(vtkUnstructuredGrid* grid, Visit&& visit)
+{
+  vtkCellArray* cells = grid ? grid->GetCells() : nullptr;
+  if (!cells)
+  {
+    return;
+  }
+  auto iter = vtk::TakeSmartPointer(cells->NewIterator());
+  vtkIdType cellId = 0;
+  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cellId)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    iter->GetCurrentCell(npts, pts);
+    visit(cellId, grid->GetCellType(cellId), npts, pts);
+  }
+}
+
 /** The linear cell a cell type is rendered as. */
 struct LinearShape
 {

@@ -22,43 +22,43 @@ vtkStandardNewMacro(vtkHexahedralCellTextures);
 
 namespace
 {
-// Six times the volume of the parallelepiped at corner 0: det[p1-p0, p3-p0, p4-p0],
-// summed with the opposite corner's, so that a left-handed cell is negative.
-double Handedness(const double* local, const vtkIdType c[8])
-{
-  auto corner = [&](int i) { return local + 3 * c[i]; };
-  double a[3], b[3], d[3], e[3], f[3], g[3];
-  vtkMath::Subtract(corner(1), corner(0), a);
-  vtkMath::Subtract(corner(3), corner(0), b);
-  vtkMath::Subtract(corner(4), corner(0), d);
-  vtkMath::Subtract(corner(5), corner(6), e);
-  vtkMath::Subtract(corner(7), corner(6), f);
-  vtkMath::Subtract(corner(2), corner(6), g);
-  return vtkMath::Determinant3x3(a, b, d) + vtkMath::Determinant3x3(e, f, g);
-}
-
-// The three edge neighbours of each corner, ordered so that they span a
-// right-handed frame in a valid hexahedron (as vtkHexahedronCoefficients).
-const int CornerFrames[8][3] = { { 1, 3, 4 }, { 2, 0, 5 }, { 3, 1, 6 }, { 0, 2, 7 },
-  { 7, 5, 0 }, { 4, 6, 1 }, { 5, 7, 2 }, { 6, 4, 3 } };
-// Corner positions on the unit cube, bits (x, y, z), in VTK_HEXAHEDRON order.
-const int CornerBits[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
-
-// |det[a b c]| / (|a| |b| |c|) of the frame at corner i: 1 for a right angle
-// corner, 0 for a collapsed or flat one.
-double FrameQuality(const double* local, const vtkIdType c[8], int i)
+// det[a b c] of the frame at corner i (its edges to
+// vtkHexahedronCoefficients::CornerNeighbor), and |a| |b| |c| in `scale`.
+double CornerFrameVolume(const double* local, const vtkIdType c[8], int i, double& scale)
 {
   double e[3][3];
   for (int k = 0; k < 3; ++k)
   {
-    vtkMath::Subtract(local + 3 * c[CornerFrames[i][k]], local + 3 * c[i], e[k]);
+    vtkMath::Subtract(
+      local + 3 * c[vtkHexahedronCoefficients::CornerNeighbor(i, k)], local + 3 * c[i], e[k]);
   }
-  const double scale = vtkMath::Norm(e[0]) * vtkMath::Norm(e[1]) * vtkMath::Norm(e[2]);
-  return scale > 0 ? std::abs(vtkMath::Determinant3x3(e[0], e[1], e[2])) / scale : 0.0;
+  scale = vtkMath::Norm(e[0]) * vtkMath::Norm(e[1]) * vtkMath::Norm(e[2]);
+  return vtkMath::Determinant3x3(e[0], e[1], e[2]);
 }
 
+// |det[a b c]| / (|a| |b| |c|) at corner i: 1 for a right-angled corner, 0 for
+// a collapsed or flat one. The shader renders a cell when this exceeds 1e-6
+// at corner 0 (march_hexahedra_fs.glsl).
+double FrameQuality(const double* local, const vtkIdType c[8], int i)
+{
+  double scale;
+  const double volume = CornerFrameVolume(local, c, i, scale);
+  return scale > 0 ? std::abs(volume) / scale : 0.0;
+}
+
+// Negative for a left-handed (mirrored) cell: the frame volumes at corner 0
+// and at the opposite corner 6, summed.
+double Handedness(const double* local, const vtkIdType c[8])
+{
+  double scale;
+  return CornerFrameVolume(local, c, 0, scale) + CornerFrameVolume(local, c, 6, scale);
+}
+
+// Corner positions on the unit cube, bits (x, y, z), in VTK_HEXAHEDRON order.
+const int CornerBits[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
+
 // Renumbers the corners by the rotation of the cube that takes corner `i` to
-// corner 0 and its frame (CornerFrames[i]) to the axes: the same cell, still
+// corner 0 and its frame (CornerNeighbor(i, 0..2)) to the axes: the same cell, still
 // right-handed, with its frame at corner i.
 void MoveFrameToCorner(vtkIdType c[8], int i)
 {
@@ -68,8 +68,11 @@ void MoveFrameToCorner(vtkIdType c[8], int i)
     index[CornerBits[q]] = q;
   }
   const int origin = CornerBits[i];
-  const int axis[3] = { CornerBits[CornerFrames[i][0]] ^ origin,
-    CornerBits[CornerFrames[i][1]] ^ origin, CornerBits[CornerFrames[i][2]] ^ origin };
+  int axis[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    axis[k] = CornerBits[vtkHexahedronCoefficients::CornerNeighbor(i, k)] ^ origin;
+  }
   vtkIdType moved[8];
   for (int q = 0; q < 8; ++q)
   {
@@ -120,30 +123,33 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   {
     return false;
   }
-  this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
-  const double* local = this->LocalPoints.data();
-
-  // Hexahedra, right-handed.
-  auto iter = vtk::TakeSmartPointer(grid->GetCells()->NewIterator());
-  vtkIdType cellId = 0;
-  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cellId)
-  {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    iter->GetCurrentCell(npts, pts);
-    const int type = grid->GetCellType(cellId);
+  // Hexahedra, in VTK_HEXAHEDRON order.
+  ppiray::ForEachCell(grid, [&](vtkIdType cellId, int type, vtkIdType npts, const vtkIdType* pts) {
     const ppiray::LinearShape shape = ppiray::LinearShapeOf(type);
     if (shape.Type != VTK_HEXAHEDRON || npts < 8)
     {
       ++this->NumberOfOtherCells;
-      continue;
+      return;
     }
     this->NumberOfQuadraticCells += shape.HigherOrder ? 1 : 0;
-    vtkIdType c[8];
+    this->CellIds.push_back(cellId);
     for (int i = 0; i < 8; ++i)
     {
-      c[i] = pts[ppiray::HexahedronCorner(type, i)];
+      this->CornerIds.push_back(pts[ppiray::HexahedronCorner(type, i)]);
     }
+  });
+  const vtkIdType numberOfHexahedra = this->GetNumberOfHexahedra();
+  if (numberOfHexahedra == 0 || this->NumberOfOtherCells > 0)
+  {
+    return false; // only counted: the textures describe meshes of hexahedra only
+  }
+  this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
+  const double* local = this->LocalPoints.data();
+
+  // Right-handed, with the cell frame at a corner that has one.
+  for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
+  {
+    vtkIdType* c = this->CornerIds.data() + 8 * h;
     if (Handedness(local, c) < 0)
     {
       std::rotate(c, c + 4, c + 8); // swap bottom and top
@@ -151,22 +157,19 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     }
     // The cell frame at the best-shaped corner when corner 0 is collapsed or
     // flat (pinch-outs): a rotation of the corner numbering.
-    if (FrameQuality(local, c, 0) < 1e-3)
+    double quality = FrameQuality(local, c, 0);
+    if (quality < 1e-3)
     {
       int best = 0;
       for (int i = 1; i < 8; ++i)
       {
-        best = FrameQuality(local, c, i) > FrameQuality(local, c, best) ? i : best;
+        const double q = FrameQuality(local, c, i);
+        best = q > quality ? i : best;
+        quality = std::max(quality, q);
       }
       MoveFrameToCorner(c, best);
     }
-    this->CellIds.push_back(cellId);
-    this->CornerIds.insert(this->CornerIds.end(), c, c + 8);
-  }
-  const vtkIdType numberOfHexahedra = this->GetNumberOfHexahedra();
-  if (numberOfHexahedra == 0)
-  {
-    return false;
+    this->NumberOfSingularFrames += quality > 1e-6 ? 0 : 1;
   }
 
   // Corners in the local frame.
@@ -189,19 +192,6 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     }
   }
   this->MaximumCellDiameter = std::sqrt(diameter2);
-  this->NumberOfSingularFrames = 0;
-  for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
-  {
-    // The shader's test |det M| <= 1e-6 |a| |b| |c| (march_hexahedra_fs.glsl).
-    const vtkIdType* c = this->CornerIds.data() + 8 * h;
-    double a[3], b[3], d[3];
-    vtkMath::Subtract(local + 3 * c[1], local + 3 * c[0], a);
-    vtkMath::Subtract(local + 3 * c[3], local + 3 * c[0], b);
-    vtkMath::Subtract(local + 3 * c[4], local + 3 * c[0], d);
-    const double scale = vtkMath::Norm(a) * vtkMath::Norm(b) * vtkMath::Norm(d);
-    const bool singular = !(std::abs(vtkMath::Determinant3x3(a, b, d)) > 1e-6 * scale);
-    this->NumberOfSingularFrames += singular ? 1 : 0;
-  }
 
   // Faces matched by their sorted point ids; diagonals by the smallest id.
   std::vector<FaceKey> faces(6 * numberOfHexahedra);
@@ -327,7 +317,7 @@ bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScala
     {
       std::copy_n(this->LocalPoints.data() + 3 * this->CornerIds[8 * h + i], 3, corners[i]);
     }
-    vtkHexahedronCoefficients::ComputeCell(corners, s, 1e-3, 1e-6, frame, c, nullptr);
+    vtkHexahedronCoefficients::FitCoefficients(corners, s, frame, c);
     for (int k = 0; k < 8; ++k)
     {
       out[k] = static_cast<float>(c[k]);

@@ -21,8 +21,9 @@
  * wound outward) with their points and, per triangle, 12 h + 2 f + (0 or 1).
  *
  * Cells: VTK_HEXAHEDRON, VTK_VOXEL and the corners of quadratic and
- * higher-order hexahedra; other cells are counted (GetNumberOfOtherCells())
- * and left out. No OpenGL here.
+ * higher-order hexahedra. A grid with other cells is only counted
+ * (GetNumberOfOtherCells(); BuildGeometry() returns false and builds
+ * nothing): the ray caster renders such meshes as tetrahedra. No OpenGL here.
  */
 #ifndef vtkHexahedralCellTextures_h
 #define vtkHexahedralCellTextures_h
@@ -42,7 +43,10 @@ public:
   vtkTypeMacro(vtkHexahedralCellTextures, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /** Corners, neighbours, diagonals and boundary. False if there is no hexahedron. */
+  /**
+   * Corners, neighbours, diagonals and boundary. False if there is no
+   * hexahedron or there are other cells.
+   */
   bool BuildGeometry(vtkUnstructuredGrid* grid);
 
   /**

@@ -29,9 +29,7 @@ vtkStandardNewMacro(vtkHexahedronCoefficients);
 
 namespace
 {
-// The three edge neighbours of each corner, in the order that makes a
-// right-handed frame at every corner of a valid hexahedron (so that
-// det[p_j - p_i, p_k - p_i, p_l - p_i] > 0).
+// See vtkHexahedronCoefficients::CornerNeighbor.
 const int CornerFrames[8][3] = { { 1, 3, 4 }, { 2, 0, 5 }, { 3, 1, 6 }, { 0, 2, 7 },
   { 7, 5, 0 }, { 4, 6, 1 }, { 5, 7, 2 }, { 6, 4, 3 } };
 
@@ -146,17 +144,53 @@ double vtkHexahedronCoefficients::EvaluateField(const double c[8], const double 
 }
 
 //------------------------------------------------------------------------------
-int vtkHexahedronCoefficients::ComputeCell(const double p[8][3], const double s[8],
-  double tolerancePlanarity, double toleranceCollapse, double frame[12], double c[8],
-  double* nonPlanarity)
+int vtkHexahedronCoefficients::CornerNeighbor(int corner, int axis)
 {
-  int flags = 0;
+  return CornerFrames[corner][axis];
+}
+
+//------------------------------------------------------------------------------
+bool vtkHexahedronCoefficients::FitCoefficients(
+  const double p[8][3], const double s[8], double frame[12], double c[8])
+{
   // Frame at corner 0 along its edges.
   std::copy(p[0], p[0] + 3, frame);
   vtkMath::Subtract(p[1], p[0], frame + 3);
   vtkMath::Subtract(p[3], p[0], frame + 6);
   vtkMath::Subtract(p[4], p[0], frame + 9);
+  // c0..c3 from corners 0, 1, 3, 4 (at (0,0,0), (1,0,0), (0,1,0), (0,0,1) by
+  // construction), c4..c7 from the other four corners.
+  UnitCubeCoefficients(s, c);
+  const int others[4] = { 2, 5, 6, 7 };
+  double a[4][4], r[4];
+  for (int row = 0; row < 4; ++row)
+  {
+    double uvw[3];
+    if (!ToFrame(frame, p[others[row]], uvw))
+    {
+      return false;
+    }
+    const double u = uvw[0], v = uvw[1], w = uvw[2];
+    a[row][0] = u * v;
+    a[row][1] = v * w;
+    a[row][2] = u * w;
+    a[row][3] = u * v * w;
+    r[row] = s[others[row]] - (c[0] + c[1] * u + c[2] * v + c[3] * w);
+  }
+  if (!SolveLinear4(a, r, 1e-10))
+  {
+    return false;
+  }
+  std::copy(r, r + 4, c + 4);
+  return true;
+}
 
+//------------------------------------------------------------------------------
+int vtkHexahedronCoefficients::ComputeCell(const double p[8][3], const double s[8],
+  double tolerancePlanarity, double toleranceCollapse, double frame[12], double c[8],
+  double* nonPlanarity)
+{
+  int flags = 0;
   // Edges: collapsed when much shorter than the longest.
   double shortest = VTK_DOUBLE_MAX, longest = 0.0;
   for (int e = 0; e < 12; ++e)
@@ -176,9 +210,9 @@ int vtkHexahedronCoefficients::ComputeCell(const double p[8][3], const double s[
   for (int i = 0; i < 8; ++i)
   {
     double e0[3], e1[3], e2[3];
-    vtkMath::Subtract(p[CornerFrames[i][0]], p[i], e0);
-    vtkMath::Subtract(p[CornerFrames[i][1]], p[i], e1);
-    vtkMath::Subtract(p[CornerFrames[i][2]], p[i], e2);
+    vtkMath::Subtract(p[CornerNeighbor(i, 0)], p[i], e0);
+    vtkMath::Subtract(p[CornerNeighbor(i, 1)], p[i], e1);
+    vtkMath::Subtract(p[CornerNeighbor(i, 2)], p[i], e2);
     if (vtkMath::Determinant3x3(e0, e1, e2) < -1e-12 * volumeScale)
     {
       flags |= INVERTED;
@@ -201,30 +235,9 @@ int vtkHexahedronCoefficients::ComputeCell(const double p[8][3], const double s[
     flags |= NON_PLANAR_FACE;
   }
 
-  // Coefficients: c0..c3 from corners 0, 1, 3, 4 (at (0,0,0), (1,0,0), (0,1,0),
-  // (0,0,1) by construction), c4..c7 from the other four corners.
-  UnitCubeCoefficients(s, c);
-  const int others[4] = { 2, 5, 6, 7 };
-  double a[4][4], r[4];
-  bool frameOk = true;
-  for (int row = 0; row < 4 && frameOk; ++row)
+  if (!FitCoefficients(p, s, frame, c))
   {
-    double uvw[3];
-    frameOk = ToFrame(frame, p[others[row]], uvw);
-    const double u = uvw[0], v = uvw[1], w = uvw[2];
-    a[row][0] = u * v;
-    a[row][1] = v * w;
-    a[row][2] = u * w;
-    a[row][3] = u * v * w;
-    r[row] = s[others[row]] - (c[0] + c[1] * u + c[2] * v + c[3] * w);
-  }
-  if (frameOk && SolveLinear4(a, r, 1e-10))
-  {
-    std::copy(r, r + 4, c + 4);
-  }
-  else
-  {
-    flags |= SINGULAR; // keep the parallelepiped formulas
+    flags |= SINGULAR; // the parallelepiped formulas were kept
   }
   return flags;
 }
@@ -265,18 +278,10 @@ int vtkHexahedronCoefficients::RequestData(
   // Point ids of every cell, for random access in parallel.
   std::vector<vtkIdType> offsets(numberOfCells + 1, 0), ids;
   ids.reserve(8 * numberOfCells);
-  {
-    auto iter = vtk::TakeSmartPointer(input->GetCells()->NewIterator());
-    vtkIdType cellId = 0;
-    for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cellId)
-    {
-      vtkIdType npts;
-      const vtkIdType* pts;
-      iter->GetCurrentCell(npts, pts);
-      ids.insert(ids.end(), pts, pts + npts);
-      offsets[cellId + 1] = static_cast<vtkIdType>(ids.size());
-    }
-  }
+  ppiray::ForEachCell(input, [&](vtkIdType cellId, int, vtkIdType npts, const vtkIdType* pts) {
+    ids.insert(ids.end(), pts, pts + npts);
+    offsets[cellId + 1] = static_cast<vtkIdType>(ids.size());
+  });
 
   vtkPoints* points = input->GetPoints();
   const vtkIdType block = 65536;

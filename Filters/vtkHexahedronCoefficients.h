@@ -85,6 +85,23 @@ public:
     double tolerancePlanarity, double toleranceCollapse, double frame[12], double coefficients[8],
     double* nonPlanarity);
 
+  /**
+   * The field's coefficients in the cell frame of corners p (VTK_HEXAHEDRON
+   * order) with scalars s, and that frame (origin, a, b, c): the fit above,
+   * without the quality checks of ComputeCell(). Returns false when the 4x4
+   * system is singular (the parallelepiped formulas are then kept).
+   */
+  static bool FitCoefficients(
+    const double corners[8][3], const double scalars[8], double frame[12], double coefficients[8]);
+
+  /**
+   * Neighbour `axis` (0..2) of corner `corner` along its edges, ordered so that
+   * the three span a right-handed frame at every corner of a valid
+   * hexahedron: det[p_n0 - p_i, p_n1 - p_i, p_n2 - p_i] > 0. Corner 0's are
+   * 1, 3, 4 (the cell frame).
+   */
+  static int CornerNeighbor(int corner, int axis);
+
   /** Frame coordinates (u, v, w) of world point x. Returns false if the frame is singular. */
   static bool ToFrame(const double frame[12], const double x[3], double uvw[3]);
 

@@ -38,25 +38,24 @@ DERIVED = {
 }
 
 
-def _tetrahedralize(dataset):
-    tetra = vtkDataSetTriangleFilter()
-    tetra.SetInputData(dataset)
-    tetra.Update()
+def _unstructured(dataset, filter_):
+    """`dataset` through `filter_` (which outputs an unstructured grid), detached."""
+    filter_.SetInputData(dataset)
+    filter_.Update()
     grid = vtkUnstructuredGrid()
-    grid.ShallowCopy(tetra.GetOutput())
+    grid.ShallowCopy(filter_.GetOutput())
     return grid
+
+
+def _tetrahedralize(dataset):
+    return _unstructured(dataset, vtkDataSetTriangleFilter())
 
 
 def _hexahedra(dataset):
     """A structured grid as an unstructured grid of hexahedra."""
     from vtkmodules.vtkFiltersCore import vtkAppendFilter
 
-    append = vtkAppendFilter()
-    append.AddInputData(dataset)
-    append.Update()
-    grid = vtkUnstructuredGrid()
-    grid.ShallowCopy(append.GetOutput())
-    return grid
+    return _unstructured(dataset, vtkAppendFilter())
 
 
 def tetrahedralized(grid):

@@ -5,10 +5,14 @@
 #define PPIRayTestScenes_h
 
 #include "PPIRayTestDisplay.h"
+#include "vtkAppendFilter.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCellType.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
 #include "vtkDoubleArray.h"
+#include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
@@ -16,18 +20,16 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
-#include "vtkAppendFilter.h"
-#include "vtkImageData.h"
-#include "vtkCellType.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkVolume.h"
 #include "vtkUnstructuredGridVolumeMapper.h"
+#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include <array>
 #include <cmath>
 #include <functional>
 #include <map>
+#include <string>
 
 namespace ppiray_test
 {
@@ -183,6 +185,21 @@ inline void SpikeTransferFunction(vtkVolumeProperty* property)
   property->SetScalarOpacity(opacity);
   property->SetScalarOpacityUnitDistance(0.05);
 }
+
+// Collects the error and warning messages of the objects it observes
+// (AddObserver(vtkCommand::ErrorEvent / WarningEvent, collector)).
+class MessageCollector : public vtkCommand
+{
+public:
+  static MessageCollector* New() { return new MessageCollector; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings) +=
+      static_cast<const char*>(data) + std::string("\n");
+  }
+  std::string Errors;
+  std::string Warnings;
+};
 
 // Window + renderer for a regression test: fixed size, no multisampling.
 struct Scene

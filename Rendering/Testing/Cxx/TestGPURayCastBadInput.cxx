@@ -18,20 +18,6 @@
 
 namespace
 {
-// Collects every error and warning message a mapper emits.
-class MessageCollector : public vtkCommand
-{
-public:
-  static MessageCollector* New() { return new MessageCollector; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings) +=
-      static_cast<const char*>(data) + std::string("\n");
-  }
-  std::string Errors;
-  std::string Warnings;
-};
-
 struct Outcome
 {
   std::string Errors;
@@ -44,7 +30,7 @@ Outcome RenderGrid(vtkUnstructuredGrid* grid)
   ppiray_test::Scene scene(100, 100);
   ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-  vtkNew<MessageCollector> observer;
+  vtkNew<ppiray_test::MessageCollector> observer;
   mapper->AddObserver(vtkCommand::ErrorEvent, observer);
   mapper->AddObserver(vtkCommand::WarningEvent, observer);
   mapper->SetInputData(grid);

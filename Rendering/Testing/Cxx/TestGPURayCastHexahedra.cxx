@@ -21,7 +21,6 @@
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
 #include "vtkAppendFilter.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCellType.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkConformingTetrahedra.h"
@@ -285,13 +284,8 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     ppiray_test::Scene scene(160, 160);
     ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.15);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-    std::string warnings;
-    vtkNew<vtkCallbackCommand> collect;
-    collect->SetClientData(&warnings);
-    collect->SetCallback([](vtkObject*, unsigned long, void* data, void* text) {
-      *static_cast<std::string*>(data) += static_cast<const char*>(text);
-    });
-    mapper->AddObserver(vtkCommand::WarningEvent, collect);
+    vtkNew<ppiray_test::MessageCollector> messages;
+    mapper->AddObserver(vtkCommand::WarningEvent, messages);
     scene.Show(mapper, grid, { 2.0, 1.3, 2.4 }, { 0.5, 0.5, 0.5 });
     mapper->SetHexahedronModeToSubdivide();
     scene.Window->Render();
@@ -344,10 +338,10 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
       }
     }
     grid->GetPoints()->Modified();
-    warnings.clear();
+    messages->Warnings.clear();
     scene.Window->Render();
     std::cout << "flattened layer: hexahedra " << mapper->GetNumberOfHexahedra() << "\n";
-    if (warnings.find("hexahedra have no frame at any corner") == std::string::npos ||
+    if (messages->Warnings.find("hexahedra have no frame at any corner") == std::string::npos ||
       mapper->GetNumberOfHexahedra() != 0)
     {
       errors += Fail("flat hexahedra did not make the mesh fall back to tetrahedra");
@@ -381,19 +375,14 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     mixed->DeepCopy(hexahedra);
     const vtkIdType tet[4] = { 0, 1, 5, 25 };
     mixed->InsertNextCell(VTK_TETRA, 4, tet);
-    std::string warnings;
-    vtkNew<vtkCallbackCommand> collect;
-    collect->SetClientData(&warnings);
-    collect->SetCallback([](vtkObject*, unsigned long, void* data, void* text) {
-      *static_cast<std::string*>(data) += static_cast<const char*>(text);
-    });
-    mapper->AddObserver(vtkCommand::WarningEvent, collect);
+    vtkNew<ppiray_test::MessageCollector> messages;
+    mapper->AddObserver(vtkCommand::WarningEvent, messages);
     mapper->SetInputData(mixed);
     scene.Window->Render();
     std::cout << "mixed: hexahedra " << mapper->GetNumberOfHexahedra() << ", tetrahedra "
               << mapper->GetNumberOfTetrahedra() << "\n";
     if (mapper->GetNumberOfHexahedra() != 0 || mapper->GetNumberOfTetrahedra() != 6 * 64 + 1 ||
-      warnings.find("hexahedra only") == std::string::npos)
+      messages->Warnings.find("hexahedra only") == std::string::npos)
     {
       errors += Fail("a mixed mesh did not fall back to tetrahedra with a warning");
     }
