@@ -3,6 +3,7 @@
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkContourValues.h"
 #include "vtkDataArray.h"
 #include "vtkCellType.h"
 #include "vtkFloatArray.h"
@@ -10,6 +11,8 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -31,6 +34,7 @@
 vtkStandardNewMacro(vtkUnstructuredGridReferenceRenderer);
 vtkCxxSetObjectMacro(vtkUnstructuredGridReferenceRenderer, VolumeProperty, vtkVolumeProperty);
 vtkCxxSetObjectMacro(vtkUnstructuredGridReferenceRenderer, Camera, vtkCamera);
+vtkCxxSetObjectMacro(vtkUnstructuredGridReferenceRenderer, Lights, vtkLightCollection);
 
 namespace
 {
@@ -131,9 +135,14 @@ struct TransferFunction
   }
 };
 
+// A ray piece on which the scalar is linear; its field gradient (constant in
+// a tetrahedron) or, in a general cell, the cell whose gradient is evaluated
+// where an isosurface is found.
 struct Segment
 {
   double T0, T1, S0, S1;
+  Vec3 Gradient = { 0, 0, 0 };
+  vtkIdType Cell = -1;
 };
 
 // Precomputed per tetrahedron (per tile): barycentric coordinates of x are
@@ -223,6 +232,15 @@ bool ClipRay(const Tetrahedron& tet, const Vec3& origin, const Vec3& direction, 
     return s;
   };
   out = { t0, t1, scalar(t0), scalar(t1) };
+  // grad s = sum_v S_v grad lambda_v = Inverse^T (S_1 - S_0, S_2 - S_0, S_3 - S_0).
+  for (int i = 0; i < 3; ++i)
+  {
+    out.Gradient[i] = 0;
+    for (int r = 0; r < 3; ++r)
+    {
+      out.Gradient[i] += tet.Inverse[r][i] * (tet.S[r + 1] - tet.S[0]);
+    }
+  }
   return true;
 }
 
@@ -341,7 +359,7 @@ void FaceCrossings(const std::vector<Vec3>& p, const Vec3& o, const Vec3& d, std
 // split until the interpolated scalar is linear along the ray within
 // `tolerance` at its quarter points and midpoint, and every piece is then
 // integrated exactly like a tetrahedron's. `cellId` >= 0 selects cell scalars.
-void GeneralCellSegments(vtkGenericCell* cell, vtkDataArray* scalars, vtkIdType cellId,
+void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scalars, vtkIdType cellId,
   const Vec3& origin, const Vec3& direction, const Vec3& centre, double tolerance,
   std::vector<Segment>& out)
 {
@@ -398,8 +416,8 @@ void GeneralCellSegments(vtkGenericCell* cell, vtkDataArray* scalars, vtkIdType 
       std::abs(sq1 - 0.75 * sa - 0.25 * sb), std::abs(sq3 - 0.25 * sa - 0.75 * sb) });
     if (depth >= 24 || deviation <= tolerance)
     {
-      out.push_back({ a, m, sa, sm });
-      out.push_back({ m, b, sm, sb });
+      out.push_back({ a, m, sa, sm, { 0, 0, 0 }, id });
+      out.push_back({ m, b, sm, sb, { 0, 0, 0 }, id });
       return;
     }
     self(self, a, sa, m, sm, depth + 1);
@@ -419,9 +437,165 @@ void GeneralCellSegments(vtkGenericCell* cell, vtkDataArray* scalars, vtkIdType 
   }
 }
 
+// Isosurfaces: the values (ascending), the transfer function's colour and
+// opacity there, and Phong lighting with the property's coefficients and the
+// lights (world coordinates; positional lights as point lights).
+struct IsoSurfaces
+{
+  int Mode = 0; // 0: none, 1: embedded in the volume, 2: surfaces only
+  std::vector<double> Values;
+  std::vector<std::array<double, 4>> Colors;
+  bool Shade = false;
+  double Ambient = 0, Diffuse = 1, Specular = 0, Power = 1;
+  struct Light
+  {
+    bool Positional;
+    Vec3 Vector; // towards the light (directional), or its position
+    Vec3 DiffuseColor, SpecularColor; // times intensity
+  };
+  std::vector<Light> Lights;
+
+  // The next surface crossed from interval j (number of values <= s) on the
+  // way to s, or -1; j moves past it.
+  int NextCrossing(double s, int& j) const
+  {
+    if (j < static_cast<int>(this->Values.size()) && this->Values[j] <= s)
+    {
+      return j++;
+    }
+    if (j > 0 && this->Values[j - 1] > s)
+    {
+      return --j;
+    }
+    return -1;
+  }
+
+  // Phong: C (Ka + Kd sum_l max(n.l, 0) D_l) + Ks sum_l [n.l > 0] max(n.h, 0)^P S_l,
+  // n the normalized gradient turned towards the viewer.
+  void Shaded(int i, const Vec3& x, const Vec3& g, const Vec3& direction, double rgb[3]) const
+  {
+    const auto& c = this->Colors[i];
+    if (!this->Shade)
+    {
+      std::copy(c.begin(), c.begin() + 3, rgb);
+      return;
+    }
+    const Vec3 view = { -direction[0], -direction[1], -direction[2] };
+    const double norm = std::sqrt(Dot(g, g));
+    Vec3 n = norm > 0 ? Vec3{ g[0] / norm, g[1] / norm, g[2] / norm } : view;
+    if (Dot(n, view) < 0)
+    {
+      n = { -n[0], -n[1], -n[2] };
+    }
+    double diffuse[3] = { 0, 0, 0 }, specular[3] = { 0, 0, 0 };
+    for (const Light& light : this->Lights)
+    {
+      Vec3 l = light.Vector;
+      if (light.Positional)
+      {
+        l = { l[0] - x[0], l[1] - x[1], l[2] - x[2] };
+        const double d = std::sqrt(Dot(l, l));
+        l = { l[0] / d, l[1] / d, l[2] / d };
+      }
+      const double nl = Dot(n, l);
+      if (nl <= 0)
+      {
+        continue;
+      }
+      Vec3 h = { l[0] + view[0], l[1] + view[1], l[2] + view[2] };
+      const double hn = std::sqrt(Dot(h, h));
+      const double nh = hn > 0 ? std::max(0.0, Dot(n, h) / hn) : 0.0;
+      const double highlight = std::pow(nh, this->Power);
+      for (int k = 0; k < 3; ++k)
+      {
+        diffuse[k] += nl * light.DiffuseColor[k];
+        specular[k] += highlight * light.SpecularColor[k];
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      rgb[k] = c[k] * (this->Ambient + this->Diffuse * diffuse[k]) + this->Specular * specular[k];
+    }
+  }
+};
+
+// The isosurfaces of `property` in `mode` (IsoSurfaces::Mode), lit by `lights`.
+IsoSurfaces BuildIsoSurfaces(vtkVolumeProperty* property, int mode, vtkLightCollection* lights)
+{
+  IsoSurfaces iso;
+  vtkContourValues* contours = property->GetIsoSurfaceValues();
+  iso.Mode = (mode == 2 || contours->GetNumberOfContours() > 0) ? mode : 0; // 2 without values: empty
+  if (!iso.Mode)
+  {
+    return iso;
+  }
+  for (int i = 0; i < contours->GetNumberOfContours(); ++i)
+  {
+    if (!std::isnan(contours->GetValue(i)))
+    {
+      iso.Values.push_back(contours->GetValue(i));
+    }
+  }
+  std::sort(iso.Values.begin(), iso.Values.end());
+  iso.Values.erase(std::unique(iso.Values.begin(), iso.Values.end()), iso.Values.end());
+  for (double v : iso.Values)
+  {
+    std::array<double, 4> c = { 1, 1, 1, 1 };
+    if (property->GetColorChannels(0) == 3)
+    {
+      property->GetRGBTransferFunction(0)->GetColor(v, c.data());
+    }
+    else
+    {
+      c[0] = c[1] = c[2] = property->GetGrayTransferFunction(0)->GetValue(v);
+    }
+    c[3] = std::min(1.0, std::max(0.0, property->GetScalarOpacity(0)->GetValue(v)));
+    iso.Colors.push_back(c);
+  }
+  iso.Shade = property->GetShade(0) != 0;
+  iso.Ambient = property->GetAmbient(0);
+  iso.Diffuse = property->GetDiffuse(0);
+  iso.Specular = property->GetSpecular(0);
+  iso.Power = property->GetSpecularPower(0);
+  if (lights)
+  {
+    vtkCollectionSimpleIterator it;
+    lights->InitTraversal(it);
+    while (vtkLight* light = lights->GetNextLight(it))
+    {
+      if (!light->GetSwitch())
+      {
+        continue;
+      }
+      IsoSurfaces::Light l;
+      double position[3], focalPoint[3];
+      light->GetTransformedPosition(position);
+      light->GetTransformedFocalPoint(focalPoint);
+      l.Positional = light->GetPositional() != 0;
+      Vec3 towards = { position[0] - focalPoint[0], position[1] - focalPoint[1],
+        position[2] - focalPoint[2] };
+      const double norm = std::sqrt(Dot(towards, towards));
+      for (int k = 0; k < 3; ++k)
+      {
+        l.Vector[k] = l.Positional ? position[k] : towards[k] / norm;
+        l.DiffuseColor[k] = light->GetIntensity() * light->GetDiffuseColor()[k];
+        l.SpecularColor[k] = light->GetIntensity() * light->GetSpecularColor()[k];
+      }
+      iso.Lights.push_back(l);
+    }
+  }
+  return iso;
+}
+
 // Front-to-back composite of the sorted, de-overlapped segments, each split
-// at every transfer-function break and integrated in closed form.
-void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf, float rgba[4])
+// at every transfer-function break and integrated in closed form; with
+// isosurfaces, also split where the scalar crosses an isovalue (and at jumps
+// between cells), the surface composited there. `gradientAt(cell, t)`: the
+// field gradient of a general cell at ray parameter t.
+template <typename GradientAt>
+void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf,
+  const IsoSurfaces& iso, const Vec3& origin, const Vec3& direction, const Vec3& centre,
+  GradientAt&& gradientAt, float rgba[4])
 {
   std::sort(segments.begin(), segments.end(),
     [](const Segment& x, const Segment& y) { return x.T0 < y.T0; });
@@ -429,38 +603,28 @@ void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf, fl
   double transmittance = 1.0;
   double reached = -std::numeric_limits<double>::infinity();
   std::vector<double> cuts;
-  for (Segment seg : segments)
-  {
-    if (seg.T1 <= reached)
-    {
-      continue;
-    }
-    if (seg.T0 < reached)
-    {
-      seg.S0 += (seg.S1 - seg.S0) * (reached - seg.T0) / (seg.T1 - seg.T0);
-      seg.T0 = reached;
-    }
-    reached = seg.T1;
+  // The volume on [t0, t1] where s goes linearly from s0 to s1.
+  auto integrateLinear = [&](double t0, double t1, double s0, double s1) {
     cuts.assign({ 0.0, 1.0 });
-    const double lo = std::min(seg.S0, seg.S1), hi = std::max(seg.S0, seg.S1);
+    const double lo = std::min(s0, s1), hi = std::max(s0, s1);
     auto first = std::upper_bound(tf.Breaks.begin(), tf.Breaks.end(), lo);
     for (auto it = first; it != tf.Breaks.end() && *it < hi; ++it)
     {
-      cuts.push_back((*it - seg.S0) / (seg.S1 - seg.S0));
+      cuts.push_back((*it - s0) / (s1 - s0));
     }
     std::sort(cuts.begin(), cuts.end());
     for (size_t k = 0; k + 1 < cuts.size(); ++k)
     {
       const double u0 = cuts[k], u1 = cuts[k + 1];
-      const double length = (u1 - u0) * (seg.T1 - seg.T0);
+      const double length = (u1 - u0) * (t1 - t0);
       if (!(length > 0))
       {
         continue;
       }
       // Evaluate just inside the piece: at a clamping-off step the function
       // jumps exactly at a break.
-      const double sa = seg.S0 + (seg.S1 - seg.S0) * (u0 + 1e-12 * (u1 - u0));
-      const double sb = seg.S0 + (seg.S1 - seg.S0) * (u1 - 1e-12 * (u1 - u0));
+      const double sa = s0 + (s1 - s0) * (u0 + 1e-12 * (u1 - u0));
+      const double sb = s0 + (s1 - s0) * (u1 - 1e-12 * (u1 - u0));
       double ca[3], cb[3], taua, taub, emitted[3], transparency;
       tf.Evaluate(sa, ca, taua);
       tf.Evaluate(sb, cb, taub);
@@ -470,6 +634,66 @@ void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf, fl
         color[c] += transmittance * emitted[c];
       }
       transmittance *= transparency;
+    }
+  };
+  auto surface = [&](int i, const Segment& seg, double t) {
+    const Vec3 x = { origin[0] + t * direction[0] + centre[0],
+      origin[1] + t * direction[1] + centre[1], origin[2] + t * direction[2] + centre[2] };
+    double rgb[3];
+    iso.Shaded(i, x, seg.Cell < 0 ? seg.Gradient : gradientAt(seg.Cell, t), direction, rgb);
+    const double alpha = iso.Colors[i][3];
+    for (int c = 0; c < 3; ++c)
+    {
+      color[c] += transmittance * alpha * rgb[c];
+    }
+    transmittance *= 1.0 - alpha;
+  };
+  int j = -1; // isovalue interval along the ray, reset where the ray leaves the mesh
+  for (Segment seg : segments)
+  {
+    if (seg.T1 <= reached)
+    {
+      continue;
+    }
+    const bool gap = seg.T0 > reached + 1e-9 * std::max(std::abs(reached), seg.T1 - seg.T0);
+    if (seg.T0 < reached)
+    {
+      seg.S0 += (seg.S1 - seg.S0) * (reached - seg.T0) / (seg.T1 - seg.T0);
+      seg.T0 = reached;
+    }
+    reached = seg.T1;
+    if (!iso.Mode)
+    {
+      integrateLinear(seg.T0, seg.T1, seg.S0, seg.S1);
+      continue;
+    }
+    if (j < 0 || gap)
+    {
+      j = static_cast<int>(
+        std::upper_bound(iso.Values.begin(), iso.Values.end(), seg.S0) - iso.Values.begin());
+    }
+    for (int i; (i = iso.NextCrossing(seg.S0, j)) >= 0;)
+    {
+      surface(i, seg, seg.T0); // the scalar jumped at the cell boundary
+    }
+    double t = seg.T0, s = seg.S0;
+    for (int i; (i = iso.NextCrossing(seg.S1, j)) >= 0;)
+    {
+      const double v = iso.Values[i];
+      const double tv = seg.S1 == seg.S0
+        ? t
+        : std::min(seg.T1, std::max(t, seg.T0 + (v - seg.S0) / (seg.S1 - seg.S0) * (seg.T1 - seg.T0)));
+      if (iso.Mode == 1)
+      {
+        integrateLinear(t, tv, s, v);
+      }
+      surface(i, seg, tv);
+      t = tv;
+      s = v;
+    }
+    if (iso.Mode == 1)
+    {
+      integrateLinear(t, seg.T1, s, seg.S1);
     }
   }
   for (int c = 0; c < 3; ++c)
@@ -493,6 +717,7 @@ vtkUnstructuredGridReferenceRenderer::~vtkUnstructuredGridReferenceRenderer()
 {
   this->SetVolumeProperty(nullptr);
   this->SetCamera(nullptr);
+  this->SetLights(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -601,6 +826,8 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
 
   TransferFunction tf;
   tf.Build(this->VolumeProperty, this->CurvedSegmentSubdivisions);
+  const IsoSurfaces iso = BuildIsoSurfaces(this->VolumeProperty,
+    this->BlendMode == ISOSURFACE ? 2 : (this->EmbedIsoSurfaces ? 1 : 0), this->Lights);
 
   // Camera: clip <-> world, with world shifted to the centre of the bounds.
   double bounds[6];
@@ -716,6 +943,33 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
     std::vector<Tetrahedron> local;
     std::vector<vtkIdType> localGeneral;
     vtkNew<vtkGenericCell> cell;
+    vtkNew<vtkGenericCell> gradientCell;
+    std::vector<double> values, weights, derivatives;
+    Vec3 origin, direction;
+    // The interpolated field's gradient in general cell c at the ray's t.
+    auto gradientAt = [&](vtkIdType c, double t) -> Vec3 {
+      if (cellScalars)
+      {
+        return { 0, 0, 0 };
+      }
+      input->GetCell(c, gradientCell);
+      const int n = static_cast<int>(gradientCell->GetNumberOfPoints());
+      values.resize(n);
+      weights.resize(std::max(n, 8));
+      for (int v = 0; v < n; ++v)
+      {
+        values[v] = scalars->GetComponent(gradientCell->GetPointId(v), 0);
+      }
+      double x[3], pcoords[3], dist2, g[3] = { 0, 0, 0 };
+      for (int i = 0; i < 3; ++i)
+      {
+        x[i] = origin[i] + t * direction[i] + centre[i];
+      }
+      int subId = 0;
+      gradientCell->EvaluatePosition(x, nullptr, subId, pcoords, dist2, weights.data());
+      gradientCell->Derivatives(subId, pcoords, values.data(), 1, g);
+      return { g[0], g[1], g[2] };
+    };
     for (vtkIdType k = tileOffsets[tile]; k < tileOffsets[tile + 1]; ++k)
     {
       const vtkIdType t = tileTets[k];
@@ -755,7 +1009,6 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
         double nearPoint[4], farPoint[4];
         clipToWorld->MultiplyPoint(ndcNear, nearPoint);
         clipToWorld->MultiplyPoint(ndcFar, farPoint);
-        Vec3 origin, direction;
         double length = 0;
         for (int i = 0; i < 3; ++i)
         {
@@ -780,10 +1033,11 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
         for (vtkIdType c : localGeneral)
         {
           input->GetCell(c, cell);
-          GeneralCellSegments(cell, scalars, cellScalars ? c : -1, origin, direction, centre,
+          GeneralCellSegments(c, cell, scalars, cellScalars ? c : -1, origin, direction, centre,
             linearTolerance, segments);
         }
-        IntegrateRay(segments, tf, out + 4 * (static_cast<size_t>(py) * width + px));
+        IntegrateRay(segments, tf, iso, origin, direction, centre, gradientAt,
+          out + 4 * (static_cast<size_t>(py) * width + px));
       }
     }
   }
@@ -797,6 +1051,9 @@ void vtkUnstructuredGridReferenceRenderer::PrintSelf(ostream& os, vtkIndent inde
   os << indent << "ImageSize: " << this->ImageSize[0] << " x " << this->ImageSize[1] << "\n";
   os << indent << "CurvedSegmentSubdivisions: " << this->CurvedSegmentSubdivisions << "\n";
   os << indent << "QuadratureTolerance: " << this->QuadratureTolerance << "\n";
+  os << indent << "BlendMode: " << this->BlendMode << "\n";
+  os << indent << "EmbedIsoSurfaces: " << this->EmbedIsoSurfaces << "\n";
+  os << indent << "Lights: " << this->Lights << "\n";
   os << indent << "VolumeProperty: " << this->VolumeProperty << "\n";
   os << indent << "Camera: " << this->Camera << "\n";
 }

@@ -29,6 +29,17 @@
  * (relative to the scalar range), and each piece is integrated exactly.
  * Other cell types are skipped with a warning.
  *
+ * Isosurfaces (SetBlendMode(ISOSURFACE), or embedded in the composite
+ * volume with EmbedIsoSurfaces): the isovalues of the property's
+ * GetIsoSurfaceValues(), where the piecewise-linear scalar along the ray
+ * crosses them (in a tetrahedron exactly; in a general cell within
+ * QuadratureTolerance), coloured and made opaque by the transfer function
+ * at the isovalue, and, with the property's Shade on, Phong-lit with its
+ * ambient, diffuse, specular and specular power and the lights of SetLights()
+ * (normal: the interpolated field's gradient, turned towards the viewer;
+ * positional lights as point lights). The same definition as
+ * vtkUnstructuredGridGPURayCastMapper's, evaluated independently.
+ *
  * Scalars: SetInputArrayToProcess(0, 0, 0, association, name); default the
  * active point scalars, else the active cell scalars; first component.
  */
@@ -39,6 +50,7 @@
 #include "vtkImageAlgorithm.h"
 
 class vtkCamera;
+class vtkLightCollection;
 class vtkVolumeProperty;
 
 class PPIRAYFILTERS_EXPORT vtkUnstructuredGridReferenceRenderer : public vtkImageAlgorithm
@@ -81,6 +93,29 @@ public:
   vtkGetMacro(QuadratureTolerance, double);
   ///@}
 
+  /** Blend modes: composite (default) or isosurfaces only (the value of vtkVolumeMapper::ISOSURFACE_BLEND). */
+  enum
+  {
+    COMPOSITE = 0,
+    ISOSURFACE = 5
+  };
+  vtkSetMacro(BlendMode, int);
+  vtkGetMacro(BlendMode, int);
+  void SetBlendModeToIsoSurface() { this->SetBlendMode(ISOSURFACE); }
+
+  ///@{
+  /** In composite mode, also draw the isosurfaces embedded in the volume (default off). */
+  vtkSetMacro(EmbedIsoSurfaces, vtkTypeBool);
+  vtkGetMacro(EmbedIsoSurfaces, vtkTypeBool);
+  vtkBooleanMacro(EmbedIsoSurfaces, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /** The lights that shade isosurfaces (e.g. a renderer's GetLights() after it rendered). */
+  virtual void SetLights(vtkLightCollection*);
+  vtkGetObjectMacro(Lights, vtkLightCollection);
+  ///@}
+
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -96,6 +131,9 @@ protected:
   int ImageSize[2] = { 256, 256 };
   int CurvedSegmentSubdivisions = 64;
   double QuadratureTolerance = 1e-6;
+  int BlendMode = COMPOSITE;
+  vtkTypeBool EmbedIsoSurfaces = 0;
+  vtkLightCollection* Lights = nullptr;
 
 private:
   vtkUnstructuredGridReferenceRenderer(const vtkUnstructuredGridReferenceRenderer&) = delete;

@@ -3,8 +3,13 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellTypes.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkContourValues.h"
 #include "vtkDataArray.h"
 #include "vtkHexahedralCellTextures.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -15,6 +20,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPPIRayBufferTexture.h"
 #include "vtkPreIntegrationTable.h"
 #include "vtkPoints.h"
@@ -35,6 +41,7 @@
 #include "hexahedron_accurate_fs.h"
 #include "hexahedron_fast_fs.h"
 #include "hexahedron_field_fs.h"
+#include "isosurface_fs.h"
 #include "march_common_fs.h"
 #include "march_fs.h"
 #include "march_hexahedra_fs.h"
@@ -114,6 +121,8 @@ public:
   vtkShaderProgram* EntryProgram = nullptr;
   std::unique_ptr<vtkOpenGLQuadHelper> MarchQuad;
   int MarchQuadKey = -1; // MarchShaderKey() the march program was built for
+  int IsoMode = 0;       // this frame's IsoSurfaceMode()
+  std::string IsoWarning; // the last isosurface warning given (given once)
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
 
   // The active cell textures' common data.
@@ -219,17 +228,20 @@ std::string UnsupportedCellsMessage(const std::vector<vtkIdType>& unsupported)
   return message.str();
 }
 
-// Which march program: the integration mode, and for native hexahedra the
-// hexahedron mode.
-int MarchShaderKey(int mode, bool native, int hexahedronMode)
+// Which march program: the integration mode, for native hexahedra the
+// hexahedron mode, and the isosurface mode.
+int MarchShaderKey(int mode, bool native, int hexahedronMode, int isoMode)
 {
-  return mode + 4 * (native ? 1 + hexahedronMode : 0);
+  return mode + 4 * (native ? 1 + hexahedronMode : 0) + 16 * isoMode;
 }
+
+constexpr int MaximumIsoValues = 16; // isosurface_fs.glsl
+constexpr int MaximumLights = 8;
 
 // The march shader of an integration mode: the traversal (tetrahedra, or
 // hexahedra with their field along the ray and hexahedron mode) with the
 // mode's segment integral (and piece integral) substituted in.
-std::string MarchShader(int mode, bool native, int hexahedronMode)
+std::string MarchShader(int mode, bool native, int hexahedronMode, int isoMode)
 {
   std::string integrate;
   switch (mode)
@@ -257,6 +269,9 @@ std::string MarchShader(int mode, bool native, int hexahedronMode)
   }
   vtkShaderProgram::Substitute(march, "//PPIRay::MarchCommon::Impl", march_common_fs);
   vtkShaderProgram::Substitute(march, "//PPIRay::TransferFunction::Impl", transfer_function_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::IsoSurface::Impl", isosurface_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::IsoSurface::Mode",
+    "const int ISO_MODE = " + std::to_string(isoMode) + ";");
   vtkShaderProgram::Substitute(march, "//PPIRay::Integrate::Impl", integrate);
   vtkShaderProgram::Substitute(march, "//PPIRay::Ray::Impl", ray_fs);
   return march;
@@ -781,7 +796,8 @@ bool vtkUnstructuredGridGPURayCastMapper::PrepareTargets(
   {
     cache->ReadyShaderProgram(in.EntryProgram);
   }
-  const int key = MarchShaderKey(this->IntegrationMode, in.Native, this->HexahedronMode);
+  const int key =
+    MarchShaderKey(this->IntegrationMode, in.Native, this->HexahedronMode, in.IsoMode);
   if (!in.MarchQuad || in.MarchQuadKey != key)
   {
     if (in.MarchQuad)
@@ -789,7 +805,8 @@ bool vtkUnstructuredGridGPURayCastMapper::PrepareTargets(
       in.MarchQuad->ReleaseGraphicsResources(context);
     }
     in.MarchQuad.reset(new vtkOpenGLQuadHelper(context, nullptr,
-      MarchShader(this->IntegrationMode, in.Native, this->HexahedronMode).c_str(), ""));
+      MarchShader(this->IntegrationMode, in.Native, this->HexahedronMode, in.IsoMode).c_str(),
+      ""));
     in.MarchQuadKey = key;
   }
   else
@@ -897,10 +914,7 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
     // An empty grid is a valid scene: nothing to draw.
     return;
   }
-  if (this->BlendMode != vtkUnstructuredGridVolumeMapper::COMPOSITE_BLEND)
-  {
-    vtkWarningMacro("Only composite blending is supported; rendering composite.");
-  }
+  this->Internals->IsoMode = this->IsoSurfaceMode(vol->GetProperty());
   if (!this->UpdateGeometry(input) || !this->UpdateField(input) ||
     !this->UpdateTransferFunction(vol->GetProperty()))
   {
@@ -1092,6 +1106,10 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
     march->SetUniformi("maximumSteps", maximumSteps);
     march->SetUniformf("terminationAlpha", terminationAlpha);
     march->SetUniformf("psiTableSize", static_cast<float>(in.PsiTextureSize));
+    if (in.IsoMode)
+    {
+      this->SetIsoSurfaceUniforms(march, ren, vol, origin);
+    }
     in.MarchQuad->Render();
     for (auto* texture : textures)
     {
@@ -1129,11 +1147,172 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
 }
 
 //------------------------------------------------------------------------------
+int vtkUnstructuredGridGPURayCastMapper::IsoSurfaceMode(vtkVolumeProperty* property)
+{
+  vtkInternals& in = *this->Internals;
+  const int count = property->GetIsoSurfaceValues()->GetNumberOfContours();
+  std::string warning;
+  int mode = 0;
+  if (this->BlendMode == ISOSURFACE_BLEND)
+  {
+    mode = 2;
+    if (count == 0)
+    {
+      warning = "ISOSURFACE_BLEND without isovalues (vtkVolumeProperty::GetIsoSurfaceValues()): "
+                "nothing is drawn.";
+    }
+  }
+  else if (this->BlendMode != COMPOSITE_BLEND)
+  {
+    warning = "Blend mode " + std::to_string(this->BlendMode) +
+      " is not supported (composite and isosurface only); rendering composite.";
+  }
+  else if (this->EmbedIsoSurfaces && count > 0)
+  {
+    mode = 1;
+  }
+  if (mode && count > MaximumIsoValues)
+  {
+    warning = std::to_string(count) + " isovalues; only the lowest " +
+      std::to_string(MaximumIsoValues) + " are drawn.";
+  }
+  if (warning != in.IsoWarning)
+  {
+    in.IsoWarning = warning;
+    if (!warning.empty())
+    {
+      vtkWarningMacro(<< warning);
+    }
+  }
+  return mode;
+}
+
+//------------------------------------------------------------------------------
+void vtkUnstructuredGridGPURayCastMapper::SetIsoSurfaceUniforms(
+  vtkShaderProgram* program, vtkRenderer* ren, vtkVolume* vol, const double origin[3])
+{
+  // Isovalues (ascending, NaN dropped) with the transfer function's colour
+  // and opacity there.
+  vtkVolumeProperty* property = vol->GetProperty();
+  vtkContourValues* contours = property->GetIsoSurfaceValues();
+  std::vector<double> values;
+  for (int i = 0; i < contours->GetNumberOfContours(); ++i)
+  {
+    if (!std::isnan(contours->GetValue(i)))
+    {
+      values.push_back(contours->GetValue(i));
+    }
+  }
+  std::sort(values.begin(), values.end());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+  values.resize(std::min<size_t>(values.size(), MaximumIsoValues));
+  float isoValues[MaximumIsoValues] = {};
+  float isoColors[MaximumIsoValues][4] = {};
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    double rgb[3] = { 1, 1, 1 };
+    if (property->GetColorChannels(0) == 3)
+    {
+      property->GetRGBTransferFunction(0)->GetColor(values[i], rgb);
+    }
+    else
+    {
+      rgb[0] = rgb[1] = rgb[2] = property->GetGrayTransferFunction(0)->GetValue(values[i]);
+    }
+    isoValues[i] = static_cast<float>(values[i]);
+    for (int c = 0; c < 3; ++c)
+    {
+      isoColors[i][c] = static_cast<float>(rgb[c]);
+    }
+    isoColors[i][3] = static_cast<float>(std::min(1.0, std::max(0.0, opacity->GetValue(values[i]))));
+  }
+  program->SetUniformi("numberOfIsoValues", static_cast<int>(values.size()));
+  program->SetUniform1fv("isoValues", MaximumIsoValues, isoValues);
+  program->SetUniform4fv("isoColors", MaximumIsoValues, isoColors);
+
+  // Material and lights (switched on, in world coordinates; positional
+  // lights as point lights: no cone, no attenuation).
+  const float material[4] = { static_cast<float>(property->GetAmbient(0)),
+    static_cast<float>(property->GetDiffuse(0)), static_cast<float>(property->GetSpecular(0)),
+    static_cast<float>(property->GetSpecularPower(0)) };
+  program->SetUniformi("shade", property->GetShade(0));
+  program->SetUniform4f("material", material);
+  float lightVector[MaximumLights][3] = {}, lightDiffuse[MaximumLights][3] = {},
+        lightSpecular[MaximumLights][3] = {};
+  int lightPositional[MaximumLights] = {};
+  int lights = 0;
+  vtkLightCollection* collection = ren->GetLights();
+  vtkCollectionSimpleIterator it;
+  collection->InitTraversal(it);
+  while (vtkLight* light = collection->GetNextLight(it))
+  {
+    if (!light->GetSwitch() || lights == MaximumLights)
+    {
+      continue;
+    }
+    double position[3], focalPoint[3];
+    light->GetTransformedPosition(position);
+    light->GetTransformedFocalPoint(focalPoint);
+    const double intensity = light->GetIntensity();
+    double towards[3] = { position[0] - focalPoint[0], position[1] - focalPoint[1],
+      position[2] - focalPoint[2] };
+    const double norm = std::max(vtkMath::Norm(towards), 1e-300);
+    lightPositional[lights] = light->GetPositional() ? 1 : 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      lightVector[lights][c] =
+        static_cast<float>(light->GetPositional() ? position[c] : towards[c] / norm);
+      lightDiffuse[lights][c] = static_cast<float>(intensity * light->GetDiffuseColor()[c]);
+      lightSpecular[lights][c] = static_cast<float>(intensity * light->GetSpecularColor()[c]);
+    }
+    ++lights;
+  }
+  program->SetUniformi("numberOfLights", lights);
+  program->SetUniform3fv("lightVector", MaximumLights, lightVector);
+  program->SetUniform3fv("lightDiffuse", MaximumLights, lightDiffuse);
+  program->SetUniform3fv("lightSpecular", MaximumLights, lightSpecular);
+  program->SetUniform1iv("lightPositional", MaximumLights, lightPositional);
+
+  // Local frame (mesh coordinates minus `origin`) to world, and its normal
+  // matrix.
+  vtkNew<vtkMatrix4x4> localToWorld;
+  localToWorld->Identity();
+  for (int i = 0; i < 3; ++i)
+  {
+    localToWorld->SetElement(i, 3, origin[i]);
+  }
+  vtkMatrix4x4::Multiply4x4(vol->GetMatrix(), localToWorld, localToWorld);
+  float localToWorldF[16];
+  ColumnMajor(localToWorld, localToWorldF);
+  program->SetUniformMatrix4x4("localToWorld", localToWorldF);
+  double linear[3][3], inverse[3][3];
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      linear[r][c] = localToWorld->GetElement(r, c);
+    }
+  }
+  vtkMath::Invert3x3(linear, inverse);
+  float normalToWorld[9]; // column-major (inverse)^T: element (r, c) = inverse[c][r]
+  for (int c = 0; c < 3; ++c)
+  {
+    for (int r = 0; r < 3; ++r)
+    {
+      normalToWorld[3 * c + r] = static_cast<float>(inverse[c][r]);
+    }
+  }
+  program->SetUniformMatrix3x3("normalToWorld", normalToWorld);
+}
+
+//------------------------------------------------------------------------------
 void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "IntegrationMode: " << this->GetIntegrationModeAsString() << "\n";
   os << indent << "HexahedronMode: " << this->GetHexahedronModeAsString() << "\n";
+  os << indent << "EmbedIsoSurfaces: " << this->EmbedIsoSurfaces << "\n";
   os << indent << "MaximumNumberOfPeels: " << this->MaximumNumberOfPeels << "\n";
   os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
   os << indent << "PsiTableSize: " << this->PsiTableSize << "\n";

@@ -36,6 +36,7 @@
 #include <memory> // for std::unique_ptr
 
 class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
 class vtkRenderer;
 class vtkUnstructuredGrid;
 class vtkUnstructuredGridBase;
@@ -122,6 +123,36 @@ public:
   void SetHexahedronModeToFast() { this->SetHexahedronMode(HEXAHEDRON_FAST); }
   void SetHexahedronModeToSubdivide() { this->SetHexahedronMode(HEXAHEDRON_SUBDIVIDE); }
   const char* GetHexahedronModeAsString();
+  ///@}
+
+  /**
+   * Blend modes: COMPOSITE_BLEND (vtkUnstructuredGridVolumeMapper) and VTK's
+   * ISOSURFACE_BLEND (the value of vtkVolumeMapper::ISOSURFACE_BLEND): the
+   * isosurfaces of vtkVolumeProperty::GetIsoSurfaceValues() (at most 16),
+   * found exactly in each cell (the root of the linear field in a
+   * tetrahedron, of the cubic along the ray in a hexahedron), coloured by
+   * the colour transfer function and with the scalar opacity at the
+   * isovalue as their opacity (1: opaque), lit with the renderer's lights and
+   * the property's ambient, diffuse, specular and specular power when its
+   * Shade is on (normal: the field gradient; trilinear in a hexahedron).
+   * MAXIMUM_INTENSITY_BLEND is not supported (composite with a warning).
+   */
+  enum
+  {
+    ISOSURFACE_BLEND = 5
+  };
+  void SetBlendModeToIsoSurface() { this->SetBlendMode(ISOSURFACE_BLEND); }
+
+  ///@{
+  /**
+   * In COMPOSITE_BLEND, also draw the isosurfaces of the property's
+   * isovalues, embedded in the volume (Weiler et al. 2003, Fig. 1): the
+   * volume is integrated up to each surface, the surface composited, and on.
+   * Default off (VTK's composite mode ignores isovalues).
+   */
+  vtkSetMacro(EmbedIsoSurfaces, vtkTypeBool);
+  vtkGetMacro(EmbedIsoSurfaces, vtkTypeBool);
+  vtkBooleanMacro(EmbedIsoSurfaces, vtkTypeBool);
   ///@}
 
   /**
@@ -215,6 +246,7 @@ protected:
 
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
   int HexahedronMode = HEXAHEDRON_ACCURATE;
+  vtkTypeBool EmbedIsoSurfaces = 0;
   int MaximumNumberOfPeels = 64;
   int MaximumNumberOfSteps = 0;
   int PsiTableSize = 512;
@@ -237,6 +269,10 @@ protected:
   void CopyOpaqueDepth(
     vtkOpenGLRenderWindow* context, int source, int x0, int y0, int width, int height);
   void RenderPasses(vtkRenderer* ren, vtkVolume* vol, vtkOpenGLRenderWindow* context);
+  // 0: no isosurfaces; 1: embedded in the composite volume; 2: surfaces only.
+  int IsoSurfaceMode(vtkVolumeProperty* property);
+  void SetIsoSurfaceUniforms(
+    vtkShaderProgram* program, vtkRenderer* ren, vtkVolume* vol, const double origin[3]);
 
 private:
   vtkUnstructuredGridGPURayCastMapper(const vtkUnstructuredGridGPURayCastMapper&) = delete;

@@ -44,40 +44,30 @@ void integrateCubicPiece(vec4 w, float xA, float xB, float sA, float sB, vec4 tf
   compositeFrontToBack(color, emitted, 1.0 - exp(-zTotal));
 }
 
-int integrateHexahedronSegment(vec4 w, float len, int k, inout vec4 color)
+// One monotonic piece [xA, x1] of the cubic (sA to s1), split at every
+// control point it crosses.
+int integrateMonotonicPiece(vec4 w, float xA, float x1, float sA, float s1, int k,
+  inout vec4 color)
 {
-  float roots[2];
-  int extrema = cubicExtrema(w, len, roots);
   int n = numberOfControlPoints;
-  float x0 = 0.0;
-  float s0 = w.x;
-  k = controlInterval(s0, k);
-  for (int piece = 0; piece <= extrema; ++piece)
+  k = controlInterval(sA, k);
+  float ds = s1 - sA;
+  vec4 tfA = transferFunction(sA, k);
+  for (int i = 0; i <= n; ++i)
   {
-    float x1 = piece < extrema ? roots[piece] : len;
-    float s1 = cubicValue(w, x1);
-    float ds = s1 - s0;
-    float xA = x0;
-    float sA = s0;
-    vec4 tfA = transferFunction(sA, k);
-    for (int i = 0; i <= n; ++i)
+    float sB;
+    int nextK = nextControlCrossing(ds, s1, k, sB);
+    float xB = nextK == k ? x1 : cubicCrossing(w, sB, xA, x1);
+    vec4 tfB = transferFunction(sB, k);
+    integrateCubicPiece(w, xA, xB, sA, sB, tfA, tfB, color);
+    if (nextK == k)
     {
-      float sB;
-      int nextK = nextControlCrossing(ds, s1, k, sB);
-      float xB = nextK == k ? x1 : cubicCrossing(w, sB, xA, x1);
-      vec4 tfB = transferFunction(sB, k);
-      integrateCubicPiece(w, xA, xB, sA, sB, tfA, tfB, color);
-      if (nextK == k)
-      {
-        break;
-      }
-      k = nextK;
-      xA = xB;
-      sA = sB;
-      tfA = transferFunction(sA, k);
+      break;
     }
-    x0 = x1;
-    s0 = s1;
+    k = nextK;
+    xA = xB;
+    sA = sB;
+    tfA = transferFunction(sA, k);
   }
   return k;
 }

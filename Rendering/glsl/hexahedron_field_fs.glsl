@@ -21,6 +21,16 @@ vec4 rayCubic(vec4 c, vec4 d, vec3 q, vec3 r)
   return vec4(w0, w1, w2, w3);
 }
 
+// Gradient of f in frame coordinates at (u, v, w) (Miranda 2011, Eq. 3-10):
+//   df/du = c1 + c4 v + c6 w + c7 vw, df/dv = c2 + c4 u + c5 w + c7 uw,
+//   df/dw = c3 + c5 v + c6 u + c7 uv;
+// in the local frame grad f = T^T grad_uvw f, T the map to frame coordinates.
+vec3 trilinearGradient(vec4 c, vec4 d, vec3 p)
+{
+  return vec3(c.y + d.x * p.y + d.z * p.z + d.w * p.y * p.z,
+    c.z + d.x * p.x + d.y * p.z + d.w * p.x * p.z, c.w + d.y * p.y + d.z * p.x + d.w * p.x * p.y);
+}
+
 float cubicValue(vec4 w, float x)
 {
   return w.x + x * (w.y + x * (w.z + x * w.w));

@@ -19,7 +19,61 @@ uniform samplerBuffer field;
 
 //PPIRay::TransferFunction::Impl
 
+//PPIRay::IsoSurface::Impl
+
 //PPIRay::Integrate::Impl
+
+// One cell's stretch of the ray, x in [0, len] past `entry`, on which s goes
+// linearly from sFront to sBack (gradient g): the volume integrated up to
+// each isosurface crossed (at x = len (v - sFront) / (sBack - sFront)), unless
+// ISO_MODE is 2, each surface composited there, and on to the exit.
+int integrateTetrahedronSegment(float sFront, float sBack, float len, vec3 g, vec3 entry,
+  vec3 direction, int k, inout int j, inout vec4 color)
+{
+  if (ISO_MODE == 0)
+  {
+    return integrateSegment(sFront, sBack, len, k, color);
+  }
+  j = j < 0 ? isoInterval(sFront, 0) : j;
+  int surface = -1;
+  // Surfaces the scalar jumped across at the entry face (cell data).
+  for (int i = 0; i < MAXIMUM_ISO_VALUES; ++i)
+  {
+    int next = nextIsoCrossing(sFront, j, surface);
+    if (surface < 0)
+    {
+      break;
+    }
+    compositeIsoSurface(surface, entry, g, direction, color);
+    j = next;
+  }
+  float x = 0.0;
+  float sA = sFront;
+  float ds = sBack - sFront;
+  for (int i = 0; i < MAXIMUM_ISO_VALUES; ++i)
+  {
+    int next = nextIsoCrossing(sBack, j, surface);
+    if (surface < 0)
+    {
+      break;
+    }
+    float v = isoValues[surface];
+    float xv = ds == 0.0 ? x : clamp(len * (v - sFront) / ds, x, len);
+    if (ISO_MODE == 1 && xv > x)
+    {
+      k = integrateSegment(sA, v, xv - x, k, color);
+    }
+    compositeIsoSurface(surface, entry + xv * direction, g, direction, color);
+    x = xv;
+    sA = v;
+    j = next;
+  }
+  if (ISO_MODE != 2 && len > x)
+  {
+    k = integrateSegment(sA, sBack, len - x, k, color);
+  }
+  return k;
+}
 
 //PPIRay::Ray::Impl
 
@@ -52,6 +106,7 @@ void main()
   vec4 plane = facePlane(cell, entryFace);
   float t = (plane.w - dot(plane.xyz, origin)) / min(dot(plane.xyz, direction), -1.0e-30);
   int k = -1;
+  int j = -1; // isovalue interval, set at the first cell
   vec4 color = vec4(0.0);
   float reached = t;
   for (int step = 0; step < maximumSteps; ++step)
@@ -84,7 +139,8 @@ void main()
     {
       float sFront = dot(g.xyz, origin + t * direction) + g.w;
       float sBack = dot(g.xyz, origin + tEnd * direction) + g.w;
-      k = integrateSegment(sFront, sBack, tEnd - t, k, color);
+      k = integrateTetrahedronSegment(sFront, sBack, tEnd - t, g.xyz, origin + t * direction,
+        direction, k, j, color);
     }
     if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
     {

@@ -26,6 +26,8 @@ const int FACE[24] = int[24](0, 4, 7, 3, 1, 2, 6, 5, 0, 1, 5, 4, 3, 7, 6, 2, 0, 
 
 //PPIRay::TransferFunction::Impl
 
+//PPIRay::IsoSurface::Impl
+
 //PPIRay::Integrate::Impl
 
 //PPIRay::Ray::Impl
@@ -33,6 +35,71 @@ const int FACE[24] = int[24](0, 4, 7, 3, 1, 2, 6, 5, 0, 1, 5, 4, 3, 7, 6, 2, 0, 
 //PPIRay::HexahedronField::Impl
 
 //PPIRay::Hexahedron::Impl
+
+// One cell's stretch of the ray, x in [0, len] past the entry point: the
+// cubic w split at its extrema into monotonic pieces, each split at the
+// isosurfaces it crosses (cubicCrossing), the volume integrated piece by
+// piece by the hexahedron mode (unless ISO_MODE is 2) and each surface
+// composited where it is crossed, with the trilinear gradient at the root
+// (c, d: coefficients; q + x r: frame coordinates; toFrame: local to frame).
+int integrateHexahedronSegment(vec4 w, float len, vec4 c, vec4 d, vec3 q, vec3 r, mat3 toFrame,
+  vec3 entry, vec3 direction, int k, inout int j, inout vec4 color)
+{
+  float roots[2];
+  int extrema = cubicExtrema(w, len, roots);
+  float x0 = 0.0;
+  float s0 = w.x;
+  int surface = -1;
+  if (ISO_MODE != 0)
+  {
+    j = j < 0 ? isoInterval(s0, 0) : j;
+    // Surfaces the scalar jumped across at the entry face (cell data).
+    for (int i = 0; i < MAXIMUM_ISO_VALUES; ++i)
+    {
+      int next = nextIsoCrossing(s0, j, surface);
+      if (surface < 0)
+      {
+        break;
+      }
+      compositeIsoSurface(surface, entry, transpose(toFrame) * trilinearGradient(c, d, q),
+        direction, color);
+      j = next;
+    }
+  }
+  for (int piece = 0; piece <= extrema; ++piece)
+  {
+    float x1 = piece < extrema ? roots[piece] : len;
+    float s1 = cubicValue(w, x1);
+    float xA = x0;
+    float sA = s0;
+    for (int i = 0; ISO_MODE != 0 && i < MAXIMUM_ISO_VALUES; ++i)
+    {
+      int next = nextIsoCrossing(s1, j, surface);
+      if (surface < 0)
+      {
+        break;
+      }
+      float v = isoValues[surface];
+      float xv = cubicCrossing(w, v, xA, x1);
+      if (ISO_MODE == 1)
+      {
+        k = integrateMonotonicPiece(w, xA, xv, sA, v, k, color);
+      }
+      compositeIsoSurface(surface, entry + xv * direction,
+        transpose(toFrame) * trilinearGradient(c, d, q + xv * r), direction, color);
+      xA = xv;
+      sA = v;
+      j = next;
+    }
+    if (ISO_MODE != 2)
+    {
+      k = integrateMonotonicPiece(w, xA, x1, sA, s1, k, color);
+    }
+    x0 = x1;
+    s0 = s1;
+  }
+  return k;
+}
 
 void loadCorners(int h, out vec3 p[8])
 {
@@ -112,6 +179,7 @@ void main()
   float t = dot(n0, p[tri.x] - origin) / min(dot(n0, direction), -1.0e-30);
 
   int k = -1;
+  int j = -1; // isovalue interval, set at the first cell
   vec4 color = vec4(0.0);
   float reached = t;
   for (int step = 0; step < maximumSteps; ++step)
@@ -179,10 +247,13 @@ void main()
       if (abs(det) > 1.0e-6 * scale)
       {
         mat3 toFrame = inverse(frame);
-        vec3 q = toFrame * (origin + t * direction - p[0]);
+        vec3 entry = origin + t * direction;
+        vec3 q = toFrame * (entry - p[0]);
         vec3 r = toFrame * direction;
-        vec4 w = rayCubic(c0, texelFetch(hexCoefficients, 2 * cell + 1), q, r);
-        k = integrateHexahedronSegment(w, tEnd - t, k, color);
+        vec4 c1 = texelFetch(hexCoefficients, 2 * cell + 1);
+        vec4 w = rayCubic(c0, c1, q, r);
+        k = integrateHexahedronSegment(w, tEnd - t, c0, c1, q, r, toFrame, entry, direction, k, j,
+          color);
       }
     }
     if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <vector>
 
 namespace ppiray_test
@@ -38,6 +39,40 @@ inline std::vector<unsigned char> ReferenceRGB(vtkUnstructuredGrid* grid,
     }
   }
   return rgb;
+}
+
+// Statistics of per-channel |image - reference| in 1/255 units.
+struct ReferenceError
+{
+  double P99 = 0, Max = 0, Mean = 0;
+};
+
+// `image`: a window's RGB over black (ReadRGB); `exact`: the reference
+// renderer's RGBA in [0, 1] (NaN: no reference value, skipped).
+inline ReferenceError AgainstReference(const std::vector<unsigned char>& image, vtkFloatArray* exact)
+{
+  std::vector<double> d;
+  for (vtkIdType p = 0; p < exact->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double value = exact->GetComponent(p, c);
+      if (!std::isnan(value))
+      {
+        d.push_back(std::abs(image[3 * p + c] - 255.0 * std::min(1.0, value)));
+      }
+    }
+  }
+  ReferenceError e;
+  if (d.empty())
+  {
+    return e;
+  }
+  e.Mean = std::accumulate(d.begin(), d.end(), 0.0) / d.size();
+  std::sort(d.begin(), d.end());
+  e.P99 = d[static_cast<size_t>(0.99 * (d.size() - 1))];
+  e.Max = d.back();
+  return e;
 }
 }
 

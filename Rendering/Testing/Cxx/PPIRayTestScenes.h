@@ -110,6 +110,24 @@ struct VoxelBlock
   vtkSmartPointer<vtkUnstructuredGrid> Hexahedra;
 };
 
+// The same cells and point data with each voxel as a VTK_HEXAHEDRON (voxel
+// corners 2, 3 and 6, 7 swapped).
+inline vtkSmartPointer<vtkUnstructuredGrid> VoxelsAsHexahedra(vtkUnstructuredGrid* voxels)
+{
+  auto hexahedra = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  hexahedra->SetPoints(voxels->GetPoints());
+  hexahedra->GetPointData()->ShallowCopy(voxels->GetPointData());
+  for (vtkIdType c = 0; c < voxels->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* v;
+    voxels->GetCellPoints(c, npts, v);
+    const vtkIdType hex[8] = { v[0], v[1], v[3], v[2], v[4], v[5], v[7], v[6] };
+    hexahedra->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+  }
+  return hexahedra;
+}
+
 inline VoxelBlock BlobVoxelBlock(int n)
 {
   vtkNew<vtkImageData> image;
@@ -129,17 +147,7 @@ inline VoxelBlock BlobVoxelBlock(int n)
   append->Update();
   VoxelBlock block;
   block.Voxels = append->GetOutput();
-  block.Hexahedra = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  block.Hexahedra->SetPoints(block.Voxels->GetPoints());
-  block.Hexahedra->GetPointData()->ShallowCopy(block.Voxels->GetPointData());
-  for (vtkIdType c = 0; c < block.Voxels->GetNumberOfCells(); ++c)
-  {
-    vtkIdType npts;
-    const vtkIdType* v;
-    block.Voxels->GetCellPoints(c, npts, v);
-    const vtkIdType hex[8] = { v[0], v[1], v[3], v[2], v[4], v[5], v[7], v[6] };
-    block.Hexahedra->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
-  }
+  block.Hexahedra = VoxelsAsHexahedra(block.Voxels);
   return block;
 }
 

@@ -19,6 +19,7 @@
 
 #include "PPIRayImageCompare.h"
 #include "PPIRayPixelCheck.h"
+#include "PPIRayReferenceImage.h"
 #include "PPIRayTestScenes.h"
 #include "vtkAppendFilter.h"
 #include "vtkCellType.h"
@@ -43,11 +44,6 @@
 
 namespace
 {
-struct Error
-{
-  double P99 = 0, Max = 0, Mean = 0;
-};
-
 // The reference image (RGB in [0, 1], NaN where the reference has none).
 // QuadratureTolerance 1e-5 (scalar deviation from linear per piece, relative
 // to the cell's range) keeps its error far below 1/255 at a tenth of the time
@@ -64,32 +60,12 @@ vtkSmartPointer<vtkFloatArray> Reference(ppiray_test::Scene& scene, vtkUnstructu
   return vtkFloatArray::SafeDownCast(reference->GetOutput()->GetPointData()->GetScalars());
 }
 
+using Error = ppiray_test::ReferenceError;
+
 // Per-channel |GPU - reference| in 1/255 over all pixels (black background).
-Error AgainstReference(ppiray_test::Scene& scene, vtkFloatArray* exact, int w, int h)
+Error AgainstReference(ppiray_test::Scene& scene, vtkFloatArray* exact, int, int)
 {
-  const auto image = ppiray_test::ReadRGB(scene.Window);
-  std::vector<double> d;
-  for (int p = 0; p < w * h; ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double value = exact->GetComponent(p, c);
-      if (!std::isnan(value))
-      {
-        d.push_back(std::abs(image[3 * p + c] - 255.0 * value));
-      }
-    }
-  }
-  Error e;
-  if (d.empty())
-  {
-    return e;
-  }
-  e.Mean = std::accumulate(d.begin(), d.end(), 0.0) / d.size();
-  std::sort(d.begin(), d.end());
-  e.P99 = d[static_cast<size_t>(0.99 * (d.size() - 1))];
-  e.Max = d.back();
-  return e;
+  return ppiray_test::AgainstReference(ppiray_test::ReadRGB(scene.Window), exact);
 }
 
 // Six spikes of width 0.01 over a faint ramp, on scalars in [0, 1].
