@@ -2,12 +2,14 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
+#include "vtkContourValues.h"
 #include "vtkDataSet.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODVolume.h"
 #include "vtkPVRenderView.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
+#include "vtkVolumeProperty.h"
 
 #include <cstring>
 
@@ -77,6 +79,32 @@ void vtkPPIRayVolumeRepresentation::SetPreIntegrationTableSize(int size)
 void vtkPPIRayVolumeRepresentation::SetTerminationOpacity(double opacity)
 {
   this->Mapper->SetTerminationOpacity(opacity);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayVolumeRepresentation::SetPPIRayBlendMode(int mode)
+{
+  this->Mapper->SetBlendMode(mode == 1 ? vtkUnstructuredGridGPURayCastMapper::ISOSURFACE_BLEND
+                                       : vtkUnstructuredGridGPURayCastMapper::COMPOSITE_BLEND);
+  this->Mapper->SetEmbedIsoSurfaces(mode == 2);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayVolumeRepresentation::SetIsosurfaceValue(int i, double value)
+{
+  this->Property->GetIsoSurfaceValues()->SetValue(i, value);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayVolumeRepresentation::SetNumberOfIsosurfaces(int number)
+{
+  this->Property->GetIsoSurfaceValues()->SetNumberOfContours(number);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayVolumeRepresentation::SetShade(int shade)
+{
+  this->Property->SetShade(shade);
 }
 
 //------------------------------------------------------------------------------

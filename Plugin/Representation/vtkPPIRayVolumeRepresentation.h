@@ -48,6 +48,15 @@ public:
   void SetPsiTableSize(int size);
   void SetPreIntegrationTableSize(int size);
   void SetTerminationOpacity(double opacity);
+  // 0: composite, 1: isosurfaces only (ISOSURFACE_BLEND), 2: composite with
+  // the isosurfaces embedded (EmbedIsoSurfaces).
+  void SetPPIRayBlendMode(int mode);
+  // The isovalues, in the volume property (vtkImageVolumeRepresentation's
+  // names, so that ParaView's isovalue widgets drive them the same way).
+  void SetIsosurfaceValue(int i, double value);
+  void SetNumberOfIsosurfaces(int number);
+  // Lighting of the isosurfaces (the volume property's Shade).
+  void SetShade(int shade);
   ///@}
 
   /** The mapper (for its counters, GPU memory size and peel count). */

@@ -29,6 +29,11 @@ NEW_VALUES = {
     "PsiTableSize": (128, 128, "GetPsiTableSize"),
     "PreIntegrationTableSize": (32, 32, "GetPreIntegrationTableSize"),
     "TerminationOpacity": (0.95, 0.95, "GetTerminationOpacity"),
+    "PPIRayBlendMode": ("Isosurfaces", 5, "GetBlendMode"),
+    # Repeatable, no default; kept in the volume property (rendering checked
+    # by TestPPIRayRepresentation).
+    "PPIRayIsosurfaceValues": ([100.0, 150.0], None, None),
+    "Shade": (1, None, None),
 }
 
 
@@ -76,6 +81,12 @@ def main(plugin, xml_path):
             failures.append("%s is not in ListProperties()" % name)
             continue
         value, expected, getter = NEW_VALUES[name]
+        if getter is None:
+            display.SetPropertyWithName(name, value)
+            kept = display.GetPropertyValue(name)
+            if (list(kept) if hasattr(kept, "__len__") else kept) != value:
+                failures.append("%s = %r not kept" % (name, value))
+            continue
         mapper_default = getattr(mapper, getter)()
         if abs(float(default) - float(mapper_default)) > 1e-12:
             failures.append("%s: XML default %s, mapper default %s" % (name, default, mapper_default))

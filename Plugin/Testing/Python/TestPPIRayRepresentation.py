@@ -9,7 +9,10 @@ Wavelet -> Tetrahedralize (40,000 tetrahedra) shown as PPIRay Volume:
  3. a mapper property alone (PsiTableSize): nothing re-uploaded;
  4. an interactive (LOD) render then a still render: the still image is the
     full-quality one of step 2;
- 5. an opaque slice and outline in the same view: matches the third baseline.
+ 5. an opaque slice and outline in the same view: matches the third baseline;
+ 6. PPIRay Blend Mode "Isosurfaces" with two Isosurface Values, shaded:
+    matches the fourth baseline; the mapper is in ISOSURFACE_BLEND and no cell
+    data was re-uploaded.
 
 Usage: pvbatch TestPPIRayRepresentation.py PLUGIN BASELINE_DIR TEMPORARY_DIR
 """
@@ -98,6 +101,18 @@ def main(plugin, baselines, temporary):
     outline_display.DiffuseColor = [1.0, 1.0, 1.0]
     check_image(view, "TestPPIRayRepresentationOpaque")
     Hide(slice_, view)
+
+    # 6. Isosurfaces.
+    before = counts(mapper)
+    display.PPIRayBlendMode = "Isosurfaces"
+    display.PPIRayIsosurfaceValues = [130.0, 210.0]
+    display.Shade = 1
+    check_image(view, "TestPPIRayRepresentationIso")
+    if mapper.GetBlendMode() != 5 or mapper.GetEmbedIsoSurfaces():
+        failures.append("Isosurfaces reached the mapper as blend mode %d, embed %d"
+                        % (mapper.GetBlendMode(), mapper.GetEmbedIsoSurfaces()))
+    if counts(mapper)[:2] != before[:2]:
+        failures.append("isosurfaces re-uploaded cell data: %s -> %s" % (before, counts(mapper)))
 
     pt.finish(failures)
 
