@@ -2,6 +2,17 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
+#include "vtkAppendFilter.h"
+#include "vtkCellType.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkImageData.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
+#include "vtkStructuredGrid.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolumeRepresentationPreprocessor.h"
+#include "vtkRectilinearGrid.h"
 #include "vtkContourValues.h"
 #include "vtkDataSet.h"
 #include "vtkInformation.h"
@@ -17,6 +28,61 @@ namespace
 {
 // The name the mapper is registered under with AddVolumeMapper().
 constexpr const char* PPIRayMapperName = "PPIRay";
+
+// Whether every cell of `data` is a hexahedron or a voxel.
+bool IsHexahedral(vtkDataSet* data)
+{
+  if (vtkStructuredGrid::SafeDownCast(data) || vtkImageData::SafeDownCast(data) ||
+    vtkRectilinearGrid::SafeDownCast(data))
+  {
+    return data->GetNumberOfCells() > 0 && data->GetCell(0)->GetCellDimension() == 3;
+  }
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
+  if (!grid || grid->GetNumberOfCells() == 0)
+  {
+    return false;
+  }
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    const int type = grid->GetCellType(c);
+    if (type != VTK_HEXAHEDRON && type != VTK_VOXEL)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The one non-empty dataset of `input` (itself, or the only non-empty leaf
+// of a composite dataset); null if there are several or none.
+vtkDataSet* SingleDataSet(vtkDataObject* input)
+{
+  if (auto* data = vtkDataSet::SafeDownCast(input))
+  {
+    return data;
+  }
+  auto* composite = vtkCompositeDataSet::SafeDownCast(input);
+  if (!composite)
+  {
+    return nullptr;
+  }
+  vtkDataSet* found = nullptr;
+  vtkSmartPointer<vtkCompositeDataIterator> it;
+  it.TakeReference(composite->NewIterator());
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
+    if (leaf && leaf->GetNumberOfCells() > 0)
+    {
+      if (found)
+      {
+        return nullptr;
+      }
+      found = leaf;
+    }
+  }
+  return found;
+}
 }
 
 vtkStandardNewMacro(vtkPPIRayVolumeRepresentation);
@@ -84,8 +150,9 @@ void vtkPPIRayVolumeRepresentation::SetTerminationOpacity(double opacity)
 //------------------------------------------------------------------------------
 void vtkPPIRayVolumeRepresentation::SetPPIRayBlendMode(int mode)
 {
-  this->Mapper->SetBlendMode(mode == 1 ? vtkUnstructuredGridGPURayCastMapper::ISOSURFACE_BLEND
-                                       : vtkUnstructuredGridGPURayCastMapper::COMPOSITE_BLEND);
+  this->Mapper->SetBlendMode(mode == 1
+      ? static_cast<int>(vtkUnstructuredGridGPURayCastMapper::ISOSURFACE_BLEND)
+      : static_cast<int>(vtkUnstructuredGridGPURayCastMapper::COMPOSITE_BLEND));
   this->Mapper->SetEmbedIsoSurfaces(mode == 2);
 }
 
@@ -105,6 +172,60 @@ void vtkPPIRayVolumeRepresentation::SetNumberOfIsosurfaces(int number)
 void vtkPPIRayVolumeRepresentation::SetShade(int shade)
 {
   this->Property->SetShade(shade);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayVolumeRepresentation::SetHexahedronMode(int mode)
+{
+  if (mode != this->Mapper->GetHexahedronMode())
+  {
+    this->Mapper->SetHexahedronMode(mode);
+    this->MarkModified(); // may switch between passing hexahedra and the preprocessor
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkPPIRayVolumeRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestData(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  // Hexahedra pass through when the mapper renders them natively, in one
+  // process, and the preprocessor kept the data (block selection).
+  this->PassesHexahedra = false;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  auto* preprocessed =
+    vtkUnstructuredGrid::SafeDownCast(this->Preprocessor->GetOutputDataObject(0));
+  if (this->Mapper->GetHexahedronMode() == vtkUnstructuredGridGPURayCastMapper::HEXAHEDRON_SUBDIVIDE ||
+    (controller && controller->GetNumberOfProcesses() > 1) ||
+    inputVector[0]->GetNumberOfInformationObjects() != 1 || !preprocessed ||
+    preprocessed->GetNumberOfCells() == 0)
+  {
+    return 1;
+  }
+  vtkDataSet* data = SingleDataSet(vtkDataObject::GetData(inputVector[0], 0));
+  if (!data || !IsHexahedral(data))
+  {
+    return 1;
+  }
+  // The view delivers the preprocessor's output (the superclass hands it to
+  // vtkPVRenderView::SetPiece, which takes one piece per update): it now
+  // holds the hexahedra. The preprocessor re-executes on every update.
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
+  {
+    preprocessed->ShallowCopy(grid);
+  }
+  else
+  {
+    vtkNew<vtkAppendFilter> append; // structured cells become hexahedra or voxels
+    append->AddInputData(data);
+    append->Update();
+    preprocessed->ShallowCopy(append->GetOutput());
+  }
+  this->PassesHexahedra = true;
+  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -143,6 +264,7 @@ int vtkPPIRayVolumeRepresentation::ProcessViewRequest(
 void vtkPPIRayVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "PassesHexahedra: " << this->PassesHexahedra << "\n";
   os << indent << "Mapper:\n";
   this->Mapper->PrintSelf(os, indent.GetNextIndent());
 }

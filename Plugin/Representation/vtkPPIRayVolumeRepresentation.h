@@ -14,6 +14,13 @@
  *
  * Input: unstructured grids and any dataset or composite dataset (the
  * representation's preprocessor merges blocks and tetrahedralizes).
+ * Hexahedral data (a structured or image grid, or an unstructured grid of
+ * hexahedra and voxels only, alone or as the one block of a composite
+ * dataset) is passed to the mapper as hexahedra instead, so that its
+ * HexahedronMode applies (default HEXAHEDRON_ACCURATE: the trilinear field,
+ * not six linear tetrahedra), when ParaView runs in one process: in parallel
+ * the view redistributes the preprocessor's output and the pass-through
+ * aborted the 2-rank run (Documentation/paraview.md).
  *
  * The mapper's settings are forwarded without touching the pipeline, so a
  * change re-renders without re-uploading geometry or scalars (the mapper's
@@ -57,6 +64,8 @@ public:
   void SetNumberOfIsosurfaces(int number);
   // Lighting of the isosurfaces (the volume property's Shade).
   void SetShade(int shade);
+  // Also decides whether hexahedral data bypasses the tetrahedralization.
+  void SetHexahedronMode(int mode);
   ///@}
 
   /** The mapper (for its counters, GPU memory size and peel count). */
@@ -65,18 +74,24 @@ public:
   int ProcessViewRequest(vtkInformationRequestKey* request, vtkInformation* inInfo,
     vtkInformation* outInfo) override;
 
+  /** Whether the last update passed hexahedra through untouched. */
+  bool GetPassesHexahedra() const { return this->PassesHexahedra; }
+
 protected:
   vtkPPIRayVolumeRepresentation();
   ~vtkPPIRayVolumeRepresentation() override;
 
   /** Unstructured grids, any other dataset, composite datasets. */
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
 
 private:
   vtkPPIRayVolumeRepresentation(const vtkPPIRayVolumeRepresentation&) = delete;
   void operator=(const vtkPPIRayVolumeRepresentation&) = delete;
 
   vtkUnstructuredGridGPURayCastMapper* Mapper;
+  bool PassesHexahedra = false;
 };
 
 #endif

@@ -25,6 +25,7 @@ from paraview.simple import Hide, Render, Show, Tetrahedralize, Transform, Wavel
 # A value different from the default for each property, and the mapper getter.
 NEW_VALUES = {
     "IntegrationMode": ("Exact Linear", 1, "GetIntegrationMode"),
+    "HexahedronMode": ("Fast", 1, "GetHexahedronMode"),
     "MaximumNumberOfPeels": (7, 7, "GetMaximumNumberOfPeels"),
     "PsiTableSize": (128, 128, "GetPsiTableSize"),
     "PreIntegrationTableSize": (32, 32, "GetPreIntegrationTableSize"),

@@ -1,7 +1,9 @@
 """pvbatch: Blunt Fin (NASA, PLOT3D) opened with ParaView's PLOT3D reader,
 a multiblock of one curvilinear grid, shown as "PPIRay Volume" coloured by
-Density (the representation tetrahedralizes it), compared
-with a baseline. Skipped (125) when the data root has no bluntfin folder.
+Density: by default its 37,479 hexahedra reach the mapper as they are
+(Hexahedron Mode "Accurate", rendered natively); with "Subdivide" the
+representation's preprocessor tetrahedralizes them. Each compared with its
+baseline. Skipped (125) when the data root has no bluntfin folder.
 
 Usage: pvbatch TestPPIRayRepresentationBluntFin.py PLUGIN BASELINE_DIR TEMPORARY_DIR DATA_ROOT
 """
@@ -46,15 +48,24 @@ def main(plugin, baselines, temporary, data_root):
         failures.append("PLOT3D output shown as %s" % display.GetXMLName())
     pt.set_camera(view, [c + d for c, d in zip(centre, (1.0, 0.7, 1.3))], centre, zoom=1.3)
 
-    image = pt.screenshot(view, os.path.join(temporary, "TestPPIRayRepresentationBluntFin.png"))
-    problem = pt.compare_with_baseline(
-        image, os.path.join(baselines, "TestPPIRayRepresentationBluntFin.png"), temporary)
-    if problem:
-        failures.append(problem)
+    def check_image(name):
+        image = pt.screenshot(view, os.path.join(temporary, name + ".png"))
+        problem = pt.compare_with_baseline(image, os.path.join(baselines, name + ".png"), temporary)
+        if problem:
+            failures.append(problem)
+
+    check_image("TestPPIRayRepresentationBluntFin")
     mapper = pt.mapper_of(display)
-    if mapper.GetNumberOfTetrahedra() != EXPECTED_TETRAHEDRA:
-        failures.append("%d tetrahedra, expected %d"
-                        % (mapper.GetNumberOfTetrahedra(), EXPECTED_TETRAHEDRA))
+    if mapper.GetNumberOfHexahedra() != 37479 or mapper.GetNumberOfTetrahedra() != 0:
+        failures.append("natively: %d hexahedra, %d tetrahedra, expected 37479 and 0"
+                        % (mapper.GetNumberOfHexahedra(), mapper.GetNumberOfTetrahedra()))
+
+    display.HexahedronMode = "Subdivide"
+    check_image("TestPPIRayRepresentationBluntFinSubdivide")
+    if mapper.GetNumberOfTetrahedra() != EXPECTED_TETRAHEDRA or mapper.GetNumberOfHexahedra():
+        failures.append("Subdivide: %d tetrahedra, %d hexahedra, expected %d and 0"
+                        % (mapper.GetNumberOfTetrahedra(), mapper.GetNumberOfHexahedra(),
+                           EXPECTED_TETRAHEDRA))
     pt.finish(failures)
     return 0
 
