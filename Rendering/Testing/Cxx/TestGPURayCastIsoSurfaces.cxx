@@ -17,7 +17,8 @@
 //  4. Cell scalars on tetrahedra (the field jumps at faces): the surfaces lie
 //     on the faces where the jump crosses the isovalue.
 //  5. Bad input: ISOSURFACE_BLEND without isovalues draws nothing (warning,
-//     once), an unsupported blend mode renders composite (warning).
+//     once); 20 isovalues draw the lowest 16 (warning); an unsupported blend
+//     mode renders composite (warning).
 // The baseline is a 2x2 window: tetrahedra, native hexahedra, subdivided
 // hexahedra (surfaces only), native hexahedra embedded in the volume.
 
@@ -353,6 +354,22 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
     if (lit != 0 || warnings != 1)
     {
       errors += Fail("ISOSURFACE_BLEND without isovalues: expected an empty image and one warning");
+    }
+    // More isovalues than the shader takes: the lowest 16 drawn, a warning.
+    for (int i = 0; i < 20; ++i)
+    {
+      scene.Property->GetIsoSurfaceValues()->SetValue(i, 0.1 * (i + 1));
+    }
+    scene.Window->Render();
+    const auto many = ppiray_test::ReadRGB(scene.Window);
+    int manyLit = 0;
+    for (unsigned char v : many)
+    {
+      manyLit += v > 0 ? 1 : 0;
+    }
+    if (messages->Warnings.find("only the lowest 16") == std::string::npos || manyLit == 0)
+    {
+      errors += Fail("20 isovalues: expected a warning and the lowest 16 drawn");
     }
     mapper->SetBlendMode(vtkUnstructuredGridVolumeMapper::MAXIMUM_INTENSITY_BLEND);
     scene.Window->Render();
