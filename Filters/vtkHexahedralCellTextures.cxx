@@ -60,6 +60,37 @@ const int CornerBits[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
 // Renumbers the corners by the rotation of the cube that takes corner `i` to
 // corner 0 and its frame (CornerNeighbor(i, 0..2)) to the axes: the same cell, still
 // right-handed, with its frame at corner i.
+// Whether the hexahedron has no volume: the six tetrahedra (0, a, b, 6)
+// around its 0-6 diagonal add up to less than 1e-9 of its largest edge cubed.
+bool IsFlat(const double* local, const vtkIdType c[8])
+{
+  static const int ring[7] = { 1, 2, 3, 7, 4, 5, 1 };
+  auto at = [&](int i) { return local + 3 * c[i]; };
+  double volume = 0, size = 0;
+  for (int k = 0; k < 6; ++k)
+  {
+    double a[3], b[3], d[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      a[i] = at(ring[k])[i] - at(0)[i];
+      b[i] = at(ring[k + 1])[i] - at(0)[i];
+      d[i] = at(6)[i] - at(0)[i];
+    }
+    double n[3];
+    vtkMath::Cross(a, b, n);
+    volume += vtkMath::Dot(n, d) / 6.0;
+  }
+  for (int i = 0; i < 8; ++i)
+  {
+    for (int j = 0; j < i; ++j)
+    {
+      size = std::max(size, vtkMath::Distance2BetweenPoints(at(i), at(j)));
+    }
+  }
+  size = std::sqrt(size);
+  return !(std::abs(volume) > 1e-9 * size * size * size);
+}
+
 void MoveFrameToCorner(vtkIdType c[8], int i)
 {
   int index[8]; // corner of a cube position
@@ -117,6 +148,7 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->NumberOfMirroredHexahedra = 0;
   this->NumberOfNonManifoldFaces = 0;
   this->NumberOfSingularFrames = 0;
+  this->NumberOfFlatHexahedra = 0;
   this->NumberOfOtherCells = 0;
   this->NumberOfQuadraticCells = 0;
   if (!grid || !grid->GetPoints() || !grid->GetCells())
@@ -138,13 +170,40 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
       this->CornerIds.push_back(pts[ppiray::HexahedronCorner(type, i)]);
     }
   });
-  const vtkIdType numberOfHexahedra = this->GetNumberOfHexahedra();
-  if (numberOfHexahedra == 0 || this->NumberOfOtherCells > 0)
+  if (this->CellIds.empty() || this->NumberOfOtherCells > 0)
   {
     return false; // only counted: the textures describe meshes of hexahedra only
   }
   this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
   const double* local = this->LocalPoints.data();
+
+  // Zero-volume hexahedra (a layer pinched out to nothing: top face on the
+  // bottom face) are left out, like zero-volume tetrahedra: they hold no
+  // volume, and the cells on either side share their points, so they meet
+  // face to face without them. Volume: the six tetrahedra around the 0-6
+  // diagonal, against the cell's size cubed.
+  {
+    const vtkIdType count = static_cast<vtkIdType>(this->CellIds.size());
+    vtkIdType kept = 0;
+    for (vtkIdType h = 0; h < count; ++h)
+    {
+      const vtkIdType* c = this->CornerIds.data() + 8 * h;
+      if (IsFlat(local, c))
+      {
+        ++this->NumberOfFlatHexahedra;
+        continue;
+      }
+      std::copy(c, c + 8, this->CornerIds.data() + 8 * kept);
+      this->CellIds[kept++] = this->CellIds[h];
+    }
+    this->CellIds.resize(kept);
+    this->CornerIds.resize(8 * kept);
+  }
+  const vtkIdType numberOfHexahedra = this->GetNumberOfHexahedra();
+  if (numberOfHexahedra == 0)
+  {
+    return false;
+  }
 
   // Right-handed, with the cell frame at a corner that has one.
   for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
@@ -337,6 +396,7 @@ void vtkHexahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
   os << indent << "NumberOfNaNScalars: " << this->NumberOfNaNScalars << "\n";
   os << indent << "NumberOfSingularFrames: " << this->NumberOfSingularFrames << "\n";
+  os << indent << "NumberOfFlatHexahedra: " << this->NumberOfFlatHexahedra << "\n";
   os << indent << "NumberOfOtherCells: " << this->NumberOfOtherCells << "\n";
   os << indent << "NumberOfQuadraticCells: " << this->NumberOfQuadraticCells << "\n";
 }

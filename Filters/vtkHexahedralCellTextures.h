@@ -21,7 +21,8 @@
  * wound outward) with their points and, per triangle, 12 h + 2 f + (0 or 1).
  *
  * Cells: VTK_HEXAHEDRON, VTK_VOXEL and the corners of quadratic and
- * higher-order hexahedra. A grid with other cells is only counted
+ * higher-order hexahedra; zero-volume ones (pinched-out layers) are left
+ * out and counted (GetNumberOfFlatHexahedra()). A grid with other cells is only counted
  * (GetNumberOfOtherCells(); BuildGeometry() returns false and builds
  * nothing): the ray caster renders such meshes as tetrahedra. No OpenGL here.
  */
@@ -92,6 +93,8 @@ public:
    * so that the best-shaped corner becomes corner 0.
    */
   vtkGetMacro(NumberOfSingularFrames, vtkIdType);
+  /** Zero-volume hexahedra left out (not in GetNumberOfHexahedra()). */
+  vtkGetMacro(NumberOfFlatHexahedra, vtkIdType);
   vtkGetMacro(NumberOfOtherCells, vtkIdType);
   vtkGetMacro(NumberOfQuadraticCells, vtkIdType);
 
@@ -121,6 +124,7 @@ protected:
   vtkIdType NumberOfNonManifoldFaces = 0;
   vtkIdType NumberOfNaNScalars = 0;
   vtkIdType NumberOfSingularFrames = 0;
+  vtkIdType NumberOfFlatHexahedra = 0;
   vtkIdType NumberOfOtherCells = 0;
   vtkIdType NumberOfQuadraticCells = 0;
 

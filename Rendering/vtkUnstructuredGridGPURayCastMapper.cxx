@@ -505,6 +505,10 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateHexahedralGeometry(vtkUnstructur
                     << grid->GetNumberOfCells() << " cells into tetrahedra instead.");
     return false;
   }
+  if (hexes.GetNumberOfFlatHexahedra() > 0)
+  {
+    vtkWarningMacro(<< hexes.GetNumberOfFlatHexahedra() << " zero-volume hexahedra skipped.");
+  }
   if (hexes.GetNumberOfSingularFrames() > 0)
   {
     vtkWarningMacro(<< hexes.GetNumberOfSingularFrames()
