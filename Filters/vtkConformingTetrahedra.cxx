@@ -8,6 +8,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <numeric>
+#include <set>
 
 namespace
 {
@@ -65,34 +68,136 @@ LinearShape LinearShapeOf(int type)
 namespace
 {
 
-// Tetrahedra (apex, triangle) over the faces of `faces` that miss the apex;
-// a quadrilateral splits along the diagonal through its smallest point id.
+// Tetrahedra (apex, triangle) over the triangles of `faces` that miss the
+// apex's point (a cone from it); quadrilaterals split by `diagonals`. For a
+// cell without repeated points these are the triangles of the faces that do
+// not contain the apex: the diagonal of the others goes through it.
 template <size_t N>
 void AppendCone(const Face (&faces)[N], const vtkIdType* pts, int apex,
-  std::vector<vtkIdType>& tets)
+  const ppiray::QuadDiagonals& diagonals, std::vector<vtkIdType>& tets)
 {
+  const vtkIdType v = pts[apex];
   for (const Face& face : faces)
   {
-    const int n = face[3] < 0 ? 3 : 4;
-    if (std::find(face.begin(), face.begin() + n, apex) != face.begin() + n)
+    const vtkIdType q[4] = { pts[face[0]], pts[face[1]], pts[face[2]],
+      face[3] < 0 ? -1 : pts[face[3]] };
+    const bool quadrilateral = face[3] >= 0;
+    const bool second = quadrilateral && !diagonals.AlongFirstDiagonal(q[0], q[1], q[2], q[3]);
+    for (int t = 0; t < (quadrilateral ? 2 : 1); ++t)
     {
-      continue;
+      const vtkIdType a = q[ppiray::QuadTriangleCorner(t, 0, second)];
+      const vtkIdType b = q[ppiray::QuadTriangleCorner(t, 1, second)];
+      const vtkIdType c = q[ppiray::QuadTriangleCorner(t, 2, second)];
+      if (a != v && b != v && c != v)
+      {
+        tets.insert(tets.end(), { v, a, b, c });
+      }
     }
-    const vtkIdType a = pts[face[0]], b = pts[face[1]], c = pts[face[2]];
-    if (n == 3)
+  }
+}
+
+// Whether face f of hexahedron c (corner ids), split along its second
+// diagonal or not, has a triangle whose three corners all lie on another
+// face of the cell.
+bool FoldsOntoAnotherFace(const vtkIdType c[8], int f, bool second)
+{
+  const Face& face = HexahedronFaces[f];
+  for (int t = 0; t < 2; ++t)
+  {
+    vtkIdType triangle[3];
+    for (int v = 0; v < 3; ++v)
     {
-      tets.insert(tets.end(), { pts[apex], a, b, c });
-      continue;
+      triangle[v] = c[face[ppiray::QuadTriangleCorner(t, v, second)]];
     }
-    const vtkIdType d = pts[face[3]];
-    if (ppiray::SplitsAlongFirstDiagonal(a, b, c, d))
+    for (int g = 0; g < 6; ++g)
     {
-      tets.insert(tets.end(), { pts[apex], a, b, c, pts[apex], a, c, d });
+      const Face& other = HexahedronFaces[g];
+      const vtkIdType ids[4] = { c[other[0]], c[other[1]], c[other[2]], c[other[3]] };
+      auto onOther = [&](vtkIdType id) { return std::find(ids, ids + 4, id) != ids + 4; };
+      if (g != f && onOther(triangle[0]) && onOther(triangle[1]) && onOther(triangle[2]))
+      {
+        return true;
+      }
     }
-    else
+  }
+  return false;
+}
+
+std::array<vtkIdType, 4> SortedIds(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d)
+{
+  std::array<vtkIdType, 4> ids = { a, b, c, d };
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+// Signed volume of tetrahedron (a, b, c, d) of `grid`'s points.
+double SignedVolume(vtkUnstructuredGrid* grid, const vtkIdType* t)
+{
+  double p[4][3];
+  for (int i = 0; i < 4; ++i)
+  {
+    grid->GetPoint(t[i], p[i]);
+  }
+  const double u[3] = { p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2] };
+  const double v[3] = { p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2] };
+  const double w[3] = { p[3][0] - p[0][0], p[3][1] - p[0][1], p[3][2] - p[0][2] };
+  return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+           u[2] * (v[0] * w[1] - v[1] * w[0])) /
+    6.0;
+}
+
+bool HasUnfoldedFace(const vtkIdType c[8], const ppiray::QuadDiagonals& diagonals)
+{
+  for (const Face& q : HexahedronFaces)
+  {
+    if (diagonals.IsUnfolded(c[q[0]], c[q[1]], c[q[2]], c[q[3]]))
     {
-      tets.insert(tets.end(), { pts[apex], b, c, d, pts[apex], b, d, a });
+      return true;
     }
+  }
+  return false;
+}
+
+// A cone is exact when the cell is star-shaped from its apex. Next to a face
+// split against the smallest-id rule that may fail for the smallest point:
+// a tetrahedron over a triangle seen from behind has the opposite sign, and
+// the consumers, which orient every tetrahedron by its sign, would add it.
+// Then the first corner (by id) whose cone has one sign replaces the cone
+// from tets[first] on.
+void ConeFromStarPoint(vtkUnstructuredGrid* grid, const vtkIdType c[8],
+  const ppiray::QuadDiagonals& diagonals, size_t first, std::vector<vtkIdType>& tets)
+{
+  auto oneSign = [&](size_t from) {
+    double scale = 0;
+    for (size_t t = from; t < tets.size(); t += 4)
+    {
+      scale = std::max(scale, std::abs(SignedVolume(grid, tets.data() + t)));
+    }
+    int signs[2] = { 0, 0 };
+    for (size_t t = from; t < tets.size(); t += 4)
+    {
+      const double volume = SignedVolume(grid, tets.data() + t);
+      signs[volume > 0 ? 0 : 1] += std::abs(volume) > 1e-9 * scale ? 1 : 0;
+    }
+    return signs[0] == 0 || signs[1] == 0;
+  };
+  if (oneSign(first))
+  {
+    return;
+  }
+  int order[8];
+  std::iota(order, order + 8, 0);
+  std::sort(order, order + 8, [&](int a, int b) { return c[a] < c[b]; });
+  for (int apex : order)
+  {
+    std::vector<vtkIdType> cone(tets.begin(), tets.begin() + first);
+    AppendCone(HexahedronFaces, c, apex, diagonals, cone);
+    std::swap(cone, tets);
+    if (oneSign(first))
+    {
+      return;
+    }
+    std::swap(cone, tets);
   }
 }
 
@@ -135,6 +240,65 @@ int TetrahedraPerCell(int linearCellType)
 }
 
 //------------------------------------------------------------------------------
+void QuadDiagonals::AddHexahedron(const vtkIdType c[8])
+{
+  if (std::set<vtkIdType>(c, c + 8).size() == 8)
+  {
+    return;
+  }
+  for (int f = 0; f < 6; ++f)
+  {
+    const Face& q = HexahedronFaces[f];
+    const auto ids = SortedIds(c[q[0]], c[q[1]], c[q[2]], c[q[3]]);
+    const bool second = !SplitsAlongFirstDiagonal(c[q[0]], c[q[1]], c[q[2]], c[q[3]]);
+    if (std::adjacent_find(ids.begin(), ids.end()) == ids.end() &&
+      FoldsOntoAnotherFace(c, f, second) && !FoldsOntoAnotherFace(c, f, !second))
+    {
+      this->Unfolded.emplace(ids,
+        std::array<vtkIdType, 2>{ c[q[second ? 0 : 1]], c[q[second ? 2 : 3]] });
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void QuadDiagonals::Build(vtkUnstructuredGrid* grid)
+{
+  this->Unfolded.clear();
+  ForEachCell(grid, [&](vtkIdType, int type, vtkIdType npts, const vtkIdType* pts) {
+    const LinearShape shape = LinearShapeOf(type);
+    if (shape.Type == VTK_HEXAHEDRON && npts >= 8)
+    {
+      vtkIdType corners[8];
+      for (int i = 0; i < 8; ++i)
+      {
+        corners[i] = pts[HexahedronCorner(type, i)];
+      }
+      this->AddHexahedron(corners);
+    }
+  });
+}
+
+//------------------------------------------------------------------------------
+bool QuadDiagonals::IsUnfolded(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d) const
+{
+  return !this->Unfolded.empty() && this->Unfolded.count(SortedIds(a, b, c, d)) > 0;
+}
+
+//------------------------------------------------------------------------------
+bool QuadDiagonals::AlongFirstDiagonal(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d) const
+{
+  if (!this->Unfolded.empty())
+  {
+    const auto it = this->Unfolded.find(SortedIds(a, b, c, d));
+    if (it != this->Unfolded.end())
+    {
+      return it->second[0] == a || it->second[0] == c;
+    }
+  }
+  return SplitsAlongFirstDiagonal(a, b, c, d);
+}
+
+//------------------------------------------------------------------------------
 void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, TetrahedralSplit& split)
 {
   split = TetrahedralSplit();
@@ -145,6 +309,11 @@ void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, Tetrahe
   const vtkIdType numberOfCells = grid->GetNumberOfCells();
   split.Tets.reserve(4 * numberOfCells);
   split.CellIds.reserve(numberOfCells);
+  QuadDiagonals diagonals;
+  if (!tetrahedraOnly)
+  {
+    diagonals.Build(grid);
+  }
   ForEachCell(grid, [&](vtkIdType cellId, int type, vtkIdType npts, const vtkIdType* pts) {
     const LinearShape shape = LinearShapeOf(type);
     const bool accepted = shape.Type != 0 && npts >= shape.Corners &&
@@ -180,13 +349,17 @@ void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, Tetrahe
         split.Tets.insert(split.Tets.end(), corners, corners + 4);
         break;
       case VTK_HEXAHEDRON:
-        AppendCone(HexahedronFaces, corners, apex, split.Tets);
+        AppendCone(HexahedronFaces, corners, apex, diagonals, split.Tets);
+        if (HasUnfoldedFace(corners, diagonals))
+        {
+          ConeFromStarPoint(grid, corners, diagonals, before, split.Tets);
+        }
         break;
       case VTK_WEDGE:
-        AppendCone(WedgeFaces, corners, apex, split.Tets);
+        AppendCone(WedgeFaces, corners, apex, diagonals, split.Tets);
         break;
       default:
-        AppendCone(PyramidFaces, corners, apex, split.Tets);
+        AppendCone(PyramidFaces, corners, apex, diagonals, split.Tets);
         break;
     }
     split.CellIds.insert(split.CellIds.end(), (split.Tets.size() - before) / 4, cellId);

@@ -14,9 +14,12 @@
  * use the same smallest-index rule). The faces that contain v are fanned from
  * v, which is their smallest point too, so every face follows the rule.
  * Counts: hexahedron and voxel 6, wedge 3, pyramid 2. The cone is exact for
- * cells that are star-shaped from v (every convex cell); the field becomes
- * linear in each tetrahedron (the subdivision error hexahedra rendered
- * natively avoid).
+ * cells that are star-shaped from v (every convex cell). Collapsed hexahedra
+ * (repeated corner ids) follow QuadDiagonals; the cone then runs over the
+ * triangles that miss v's point id, and a hexahedron with a face split
+ * against the rule takes the first corner by id whose cone has one sign. The
+ * field becomes linear in each tetrahedron (the subdivision error hexahedra
+ * rendered natively avoid).
  *
  * Quadratic and higher-order cells are split through their linear corners.
  */
@@ -31,6 +34,8 @@
 #include "vtkType.h"
 #include "vtkUnstructuredGrid.h"       // for ForEachCell
 
+#include <array>  // for std::array
+#include <map>    // for std::map
 #include <vector> // for std::vector
 
 namespace ppiray
@@ -100,6 +105,47 @@ inline bool SplitsAlongFirstDiagonal(vtkIdType a, vtkIdType b, vtkIdType c, vtkI
 {
   return (a < c ? a : c) < (b < d ? b : d);
 }
+
+/**
+ * Corner (0..3) of quadrilateral (q0, q1, q2, q3) that is corner v (0..2) of
+ * its triangle t (0, 1): along q0-q2 the triangles are (q0, q1, q2),
+ * (q0, q2, q3); along q1-q3 they are (q1, q2, q3), (q1, q3, q0). Both keep
+ * the quadrilateral's winding.
+ */
+inline int QuadTriangleCorner(int t, int v, bool secondDiagonal)
+{
+  static const int first[2][3] = { { 0, 1, 2 }, { 0, 2, 3 } };
+  static const int second[2][3] = { { 1, 2, 3 }, { 1, 3, 0 } };
+  return secondDiagonal ? second[t][v] : first[t][v];
+}
+
+/**
+ * The diagonals of a mesh's quadrilaterals: SplitsAlongFirstDiagonal, except
+ * on faces of collapsed hexahedra (repeated corner ids) where that split puts
+ * a triangle's three corners all on another face of the cell. Such a triangle
+ * folds onto the other face and the cell's triangles enclose only part of
+ * it: a pyramid written as a hexahedron (4, 5, 6 on 0, 1, 2) whose slanted
+ * face (0, 1, 2, 7) is split along 0-2 loses the tetrahedron (0, 1, 2, 7).
+ * Such a face is split along its other diagonal, in every cell that has it
+ * (the exception is keyed by the face's point ids).
+ */
+class PPIRAYFILTERS_EXPORT QuadDiagonals
+{
+public:
+  /** The exceptions of the hexahedra and voxels of `grid`. */
+  void Build(vtkUnstructuredGrid* grid);
+  /** The exceptions of one hexahedron, corner ids in VTK_HEXAHEDRON order. */
+  void AddHexahedron(const vtkIdType c[8]);
+  /** True if quadrilateral (a, b, c, d) is split along a-c, false if along b-d. */
+  bool AlongFirstDiagonal(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d) const;
+  /** Whether quadrilateral (a, b, c, d) is one of the exceptions. */
+  bool IsUnfolded(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d) const;
+  /** Faces split against the smallest-id rule. */
+  vtkIdType GetNumberOfUnfoldedFaces() const { return static_cast<vtkIdType>(this->Unfolded.size()); }
+
+private:
+  std::map<std::array<vtkIdType, 4>, std::array<vtkIdType, 2>> Unfolded; // sorted ids: diagonal
+};
 
 /** Number of tetrahedra SplitIntoTetrahedra makes of a linear cell type (0: not split). */
 PPIRAYFILTERS_EXPORT int TetrahedraPerCell(int linearCellType);

@@ -46,12 +46,18 @@ double FrameQuality(const double* local, const vtkIdType c[8], int i)
   return scale > 0 ? std::abs(volume) / scale : 0.0;
 }
 
-// Negative for a left-handed (mirrored) cell: the frame volumes at corner 0
-// and at the opposite corner 6, summed.
+// Negative for a left-handed (mirrored) cell: the frame volumes at its eight
+// corners, summed. All eight, not two opposite ones: a collapsed corner has no
+// frame, and a pyramid written as a hexahedron (4, 5, 6 on 0, 1, 2) has none
+// at 0 or 6.
 double Handedness(const double* local, const vtkIdType c[8])
 {
-  double scale;
-  return CornerFrameVolume(local, c, 0, scale) + CornerFrameVolume(local, c, 6, scale);
+  double sum = 0, scale;
+  for (int i = 0; i < 8; ++i)
+  {
+    sum += CornerFrameVolume(local, c, i, scale);
+  }
+  return sum;
 }
 
 // Corner positions on the unit cube, bits (x, y, z), in VTK_HEXAHEDRON order.
@@ -126,12 +132,8 @@ struct FaceKey
 //------------------------------------------------------------------------------
 int vtkHexahedralCellTextures::TriangleCorner(int f, int t, int v, bool secondDiagonal)
 {
-  // Face (q0, q1, q2, q3): along q0-q2 the triangles are (q0, q1, q2), (q0, q2, q3);
-  // along q1-q3 they are (q1, q2, q3), (q1, q3, q0). Both keep the face's winding.
-  static const int first[2][3] = { { 0, 1, 2 }, { 0, 2, 3 } };
-  static const int second[2][3] = { { 1, 2, 3 }, { 1, 3, 0 } };
-  const int q = secondDiagonal ? second[t][v] : first[t][v];
-  return static_cast<int>(vtkHexahedron::GetFaceArray(f)[q]);
+  return static_cast<int>(
+    vtkHexahedron::GetFaceArray(f)[ppiray::QuadTriangleCorner(t, v, secondDiagonal)]);
 }
 
 //------------------------------------------------------------------------------
@@ -147,6 +149,7 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->BoundaryFaces.clear();
   this->NumberOfMirroredHexahedra = 0;
   this->NumberOfNonManifoldFaces = 0;
+  this->NumberOfUnfoldedFaces = 0;
   this->NumberOfSingularFrames = 0;
   this->NumberOfFlatHexahedra = 0;
   this->NumberOfOtherCells = 0;
@@ -252,7 +255,14 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   }
   this->MaximumCellDiameter = std::sqrt(diameter2);
 
-  // Faces matched by their sorted point ids; diagonals by the smallest id.
+  // Faces matched by their sorted point ids; diagonals by the smallest id,
+  // except where that folds a collapsed cell (ppiray::QuadDiagonals).
+  ppiray::QuadDiagonals diagonals;
+  for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
+  {
+    diagonals.AddHexahedron(this->CornerIds.data() + 8 * h);
+  }
+  this->NumberOfUnfoldedFaces = diagonals.GetNumberOfUnfoldedFaces();
   std::vector<FaceKey> faces(6 * numberOfHexahedra);
   this->Neighbors.assign(8 * numberOfHexahedra, -1);
   for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
@@ -264,10 +274,8 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
       const vtkIdType* q = vtkHexahedron::GetFaceArray(f);
       FaceKey& key = faces[6 * h + f];
       key.Ids = { c[q[0]], c[q[1]], c[q[2]], c[q[3]] };
-      if (!ppiray::SplitsAlongFirstDiagonal(key.Ids[0], key.Ids[1], key.Ids[2], key.Ids[3]))
-      {
-        mask |= 1 << f;
-      }
+      mask |= diagonals.AlongFirstDiagonal(key.Ids[0], key.Ids[1], key.Ids[2], key.Ids[3]) ? 0
+                                                                                        : 1 << f;
       std::sort(key.Ids.begin(), key.Ids.end());
       key.Owner = 6 * h + f;
     }
@@ -394,6 +402,7 @@ void vtkHexahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfHexahedra: " << this->GetNumberOfHexahedra() << "\n";
   os << indent << "NumberOfMirroredHexahedra: " << this->NumberOfMirroredHexahedra << "\n";
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
+  os << indent << "NumberOfUnfoldedFaces: " << this->NumberOfUnfoldedFaces << "\n";
   os << indent << "NumberOfNaNScalars: " << this->NumberOfNaNScalars << "\n";
   os << indent << "NumberOfSingularFrames: " << this->NumberOfSingularFrames << "\n";
   os << indent << "NumberOfFlatHexahedra: " << this->NumberOfFlatHexahedra << "\n";

@@ -84,6 +84,13 @@ public:
 
   vtkGetMacro(NumberOfMirroredHexahedra, vtkIdType);
   vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
+  /**
+   * Faces split along the diagonal that does not go through their smallest
+   * point id, because that split folds a triangle of a collapsed hexahedron
+   * (repeated corner ids: a pyramid or wedge written as a hexahedron) onto
+   * another of its faces. Both cells sharing such a face split it the same way.
+   */
+  vtkGetMacro(NumberOfUnfoldedFaces, vtkIdType);
   vtkGetMacro(NumberOfNaNScalars, vtkIdType);
   /**
    * Hexahedra whose frame is singular, |det M| <= 1e-6 |a| |b| |c|, at every
@@ -122,6 +129,7 @@ protected:
   std::vector<double> LocalPoints;
   vtkIdType NumberOfMirroredHexahedra = 0;
   vtkIdType NumberOfNonManifoldFaces = 0;
+  vtkIdType NumberOfUnfoldedFaces = 0;
   vtkIdType NumberOfNaNScalars = 0;
   vtkIdType NumberOfSingularFrames = 0;
   vtkIdType NumberOfFlatHexahedra = 0;

@@ -783,9 +783,7 @@ bool vtkUnstructuredGridGPURayCastMapper::PrepareTargets(
   vtkOpenGLShaderCache* cache = context->GetShaderCache();
   if (!in.EntryProgram)
   {
-    std::string entry = entry_fs;
-    vtkShaderProgram::Substitute(entry, "//PPIRay::Ray::Impl", ray_fs);
-    in.EntryProgram = cache->ReadyShaderProgram(entry_vs, entry.c_str(), "");
+    in.EntryProgram = cache->ReadyShaderProgram(entry_vs, entry_fs, "");
     if (!in.EntryProgram)
     {
       vtkErrorMacro("Could not build the entry shader.");
@@ -1003,8 +1001,6 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
   fbo->RemoveColorAttachment(1);
 
   const float terminationAlpha = static_cast<float>(this->TerminationOpacity);
-  const float exitTolerance = static_cast<float>(1e-5 * in.Length());
-  const float viewportSize[2] = { static_cast<float>(width), static_cast<float>(height) };
   vtkShaderProgram* march = in.MarchQuad->Program;
   int layer = 0;
   GLuint samplesPassed = 0;
@@ -1026,21 +1022,17 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
 
     context->GetShaderCache()->ReadyShaderProgram(in.EntryProgram);
     vtkShaderProgram* entry = in.EntryProgram;
-    vtkTextureObject* entryInputs[] = { in.LayerDepth[1 - layer], in.Exit[current], in.OpaqueDepth,
+    vtkTextureObject* entryInputs[] = { in.LayerDepth[1 - layer], in.OpaqueDepth,
       in.Accumulated[current] };
-    const char* entryNames[] = { "previousLayerDepth", "previousExit", "opaqueDepth",
-      "accumulated" };
-    for (int i = 0; i < 4; ++i)
+    const char* entryNames[] = { "previousLayerDepth", "opaqueDepth", "accumulated" };
+    for (int i = 0; i < 3; ++i)
     {
       entryInputs[i]->Activate();
       entry->SetUniformi(entryNames[i], entryInputs[i]->GetTextureUnit());
     }
     entry->SetUniformMatrix4x4("localToClip", localToClipF);
-    entry->SetUniformMatrix4x4("clipToLocal", clipToLocalF);
-    entry->SetUniform2f("viewportSize", viewportSize);
     entry->SetUniformi("firstLayer", peel == 0 ? 1 : 0);
     entry->SetUniformf("terminationAlpha", terminationAlpha);
-    entry->SetUniformf("exitTolerance", exitTolerance);
     in.EntryVAO->Bind();
     in.BoundaryTriangles->Bind();
     glBeginQuery(GL_SAMPLES_PASSED, in.Query);

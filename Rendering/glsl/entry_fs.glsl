@@ -1,29 +1,25 @@
 //VTK::System::Dec
 // Entry and peel pass (Espinha & Celes 2005, Sec. 3.3): per pixel, the nearest
-// front-facing boundary triangle
-//  - strictly behind the previous layer's entry triangle (classic depth
-//    peeling: the same face is never entered twice), and
-//  - not before where the previous march left the mesh (minus a tolerance):
-//    a ray that passed exactly through a boundary edge may already have
-//    marched through the cell behind it, which must not be integrated twice.
+// front-facing boundary triangle strictly behind the previous layer's entry
+// triangle (classic depth peeling: the same face is never entered twice).
 // Along a ray, boundary crossings alternate between entering and leaving, so
 // layer k is the k-th entry. The triangle id tells the march pass the cell and
 // face the ray enters through.
-
-in vec3 positionLocal;
+//
+// A layer may begin before where the previous march left the mesh: a ray
+// through a boundary edge has already marched through the cell behind it,
+// and across a fault the two sides' boundary faces (non-planar quadrilaterals
+// split along different diagonals) cross each other. The march starts such a
+// layer at the previous exit (march_common_fs.glsl, enterPeel), so nothing is
+// integrated twice and nothing behind the exit is dropped.
 
 uniform sampler2D previousLayerDepth; // depth of layer k-1 (unused for k = 0)
-uniform sampler2D previousExit;       // ray parameter where march k-1 stopped
 uniform sampler2D opaqueDepth;        // VTK's depth buffer: opaque geometry
 uniform sampler2D accumulated;        // colour composited so far
 uniform int firstLayer;
 uniform float terminationAlpha;
-uniform float exitTolerance;
-uniform vec2 viewportSize;
 
 out vec4 fragOutput0; // r: boundary triangle id + 1 (0: no entry)
-
-//PPIRay::Ray::Impl
 
 void main()
 {
@@ -34,16 +30,9 @@ void main()
   {
     discard;
   }
-  if (firstLayer == 0)
+  if (firstLayer == 0 && depth <= texelFetch(previousLayerDepth, pixel, 0).r)
   {
-    vec3 origin, direction;
-    pixelRay(2.0 * gl_FragCoord.xy / viewportSize - 1.0, origin, direction);
-    float t = dot(positionLocal - origin, direction);
-    if (depth <= texelFetch(previousLayerDepth, pixel, 0).r ||
-      t < texelFetch(previousExit, pixel, 0).r - exitTolerance)
-    {
-      discard;
-    }
+    discard;
   }
   fragOutput0 = vec4(float(gl_PrimitiveID + 1), 0.0, 0.0, 1.0);
 }

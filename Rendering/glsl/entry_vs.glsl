@@ -4,10 +4,8 @@
 
 in vec3 vertexMC;
 uniform mat4 localToClip;
-out vec3 positionLocal;
 
 void main()
 {
-  positionLocal = vertexMC;
   gl_Position = localToClip * vec4(vertexMC, 1.0);
 }

@@ -87,7 +87,8 @@ void main()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 before;
-  int cellFace = enterPeel(pixel, before);
+  float resume;
+  int cellFace = enterPeel(pixel, before, resume);
   if (cellFace < 0)
   {
     return;
@@ -104,7 +105,7 @@ void main()
   float tStop = opaqueStop(opaqueDepth, pixel, ndc, origin, direction);
 
   vec4 plane = facePlane(cell, entryFace);
-  float t = (plane.w - dot(plane.xyz, origin)) / min(dot(plane.xyz, direction), -1.0e-30);
+  float t = max((plane.w - dot(plane.xyz, origin)) / min(dot(plane.xyz, direction), -1.0e-30), resume);
   int k = -1;
   int j = -1; // isovalue interval, set at the first cell
   vec4 color = vec4(0.0);

@@ -155,7 +155,8 @@ void main()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 before;
-  int code = enterPeel(pixel, before); // 12 h + 2 f + t
+  float resume;
+  int code = enterPeel(pixel, before, resume); // 12 h + 2 f + t
   if (code < 0)
   {
     return;
@@ -176,7 +177,7 @@ void main()
   int mask = texelFetch(hexNeighbors, 2 * cell + 1).z;
   ivec3 tri = faceTriangle(entryFace, entryHalf, mask);
   vec3 n0 = cross(p[tri.y] - p[tri.x], p[tri.z] - p[tri.x]);
-  float t = dot(n0, p[tri.x] - origin) / min(dot(n0, direction), -1.0e-30);
+  float t = max(dot(n0, p[tri.x] - origin) / min(dot(n0, direction), -1.0e-30), resume);
 
   int k = -1;
   int j = -1; // isovalue interval, set at the first cell

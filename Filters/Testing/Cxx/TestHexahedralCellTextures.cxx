@@ -6,7 +6,11 @@
 //    same diagonal (same two point ids);
 //  - exactly the block's 108 boundary triangles, wound outward;
 //  - the coefficients reproduce the corner values in the cell frame (float);
-//  - a NaN scalar at an interior point marks the 8 cells around it.
+//  - a NaN scalar at an interior point marks the 8 cells around it;
+//  - a left-handed pyramid written as a hexahedron (corners 0, 1, 2 on 4, 5,
+//    6: no frame at corners 0 and 6) is detected mirrored too; its slanted
+//    face is split along the diagonal that does not fold a triangle into the
+//    base, and its six triangles with area face outward.
 
 #include "vtkCellType.h"
 #include "vtkDoubleArray.h"
@@ -209,5 +213,54 @@ int TestHexahedralCellTextures(int, char*[])
     errors += Fail("NaN scalar");
   }
   std::cout << "bytes per hexahedron " << vtkHexahedralCellTextures::BytesPerHexahedron() << "\n";
+
+  // A left-handed pyramid as a hexahedron: base (0, 0, 0), (1, 0, 0),
+  // (1, 1, 0), (0, 1, 0), apex (0, 1, 1); corners 0-3 = 0, 1, 2, apex and
+  // 4-7 = 0, 1, 2, 3. Every boundary triangle with area must face away from
+  // the pyramid's centroid.
+  {
+    vtkNew<vtkUnstructuredGrid> pyramid;
+    vtkNew<vtkPoints> points;
+    const double x[5][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 1, 1 } };
+    for (const auto& p : x)
+    {
+      points->InsertNextPoint(p);
+    }
+    pyramid->SetPoints(points);
+    const vtkIdType cell[8] = { 0, 1, 2, 4, 0, 1, 2, 3 };
+    pyramid->InsertNextCell(VTK_HEXAHEDRON, 8, cell);
+    vtkNew<vtkHexahedralCellTextures> one;
+    one->BuildGeometry(pyramid);
+    // (base corners + apex) / 5, in the local frame of the boundary points.
+    double centroid[3] = { 0.4, 0.6, 0.2 };
+    vtkMath::Subtract(centroid, one->GetOrigin(), centroid);
+    const std::vector<float>& q = one->GetBoundaryPoints();
+    const std::vector<unsigned int>& t = one->GetBoundaryTriangles();
+    int facing[2] = { 0, 0 }; // outward, inward
+    for (size_t i = 0; i < t.size() / 3; ++i)
+    {
+      double p[3][3];
+      for (int v = 0; v < 3; ++v)
+        for (int k = 0; k < 3; ++k)
+          p[v][k] = q[3 * t[3 * i + v] + k];
+      double e1[3], e2[3], normal[3], out[3];
+      vtkMath::Subtract(p[1], p[0], e1);
+      vtkMath::Subtract(p[2], p[0], e2);
+      vtkMath::Cross(e1, e2, normal);
+      vtkMath::Subtract(p[0], centroid, out);
+      if (vtkMath::Norm(normal) > 1e-9)
+      {
+        ++facing[vtkMath::Dot(normal, out) > 0 ? 0 : 1];
+      }
+    }
+    std::cout << "left-handed pyramid: mirrored " << one->GetNumberOfMirroredHexahedra()
+              << ", unfolded faces " << one->GetNumberOfUnfoldedFaces() << ", triangles outward "
+              << facing[0] << ", inward " << facing[1] << "\n";
+    if (one->GetNumberOfMirroredHexahedra() != 1 || one->GetNumberOfUnfoldedFaces() < 1 ||
+      facing[0] != 6 || facing[1] != 0)
+    {
+      errors += Fail("left-handed pyramid as a hexahedron");
+    }
+  }
   return errors == 0 ? 0 : 1;
 }

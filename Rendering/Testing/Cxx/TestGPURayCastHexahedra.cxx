@@ -14,6 +14,9 @@
 //     collapsed (the cell frame moves to another corner); a flattened layer
 //     (zero volume) is left out with a warning, the rest stays native, like
 //     the same mesh split into tetrahedra.
+//     A left-handed pyramid written as a hexahedron (three corners on
+//     three others, as in UNISIM-II's pinch-outs) under a hexahedron:
+//     natively exactly like their tetrahedra.
 //  4. Voxels (vtkImageData through vtkAppendFilter) render natively, exactly
 //     like the same cells given as hexahedra; a mixed mesh falls back to
 //     tetrahedra with a warning.
@@ -351,6 +354,59 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
       mapper->GetNumberOfHexahedra() != 18 || mapper->GetNumberOfPeels() != 1 || flat.P99 > 16.0)
     {
       errors += Fail("a flattened layer: expected 9 cells skipped with a warning, 18 native");
+    }
+  }
+
+  // 3b. A pyramid written as a hexahedron the way UNISIM-II's pinch-outs are:
+  // left-handed (corners 0-3 = 0, 1, 2 and the apex, 4-7 = 0, 1, 2, 3 the
+  // base), so that corners 0 and 6, where the handedness used to be
+  // measured, have no frame; and its slanted face (0, 1, 2, apex) has its
+  // smallest id at 0, so the min-id split 0-2 would fold the triangle
+  // (0, 1, 2) into the base. Alone, and under a right-handed hexahedron that
+  // shares the slanted face (together the box [0, 1]^2 x [0, 1.5]). A
+  // constant scalar makes the image depend on the traversal only (opacity by
+  // path length), exactly as the split into tetrahedra draws it. Measured
+  // before the two fixes: inside out (max 149 with the cell above), folded
+  // (half the pyramid missing alone).
+  for (int cells = 1; cells <= 2; ++cells)
+  {
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    vtkNew<vtkPoints> points;
+    const double x[9][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 1, 1 },
+      { 0, 0, 1.5 }, { 1, 0, 1.5 }, { 1, 1, 1.5 }, { 0, 1, 1.5 } };
+    vtkNew<vtkDoubleArray> scalars;
+    for (const auto& p : x)
+    {
+      points->InsertNextPoint(p);
+      scalars->InsertNextValue(0.5);
+    }
+    grid->SetPoints(points);
+    grid->GetPointData()->SetScalars(scalars);
+    const vtkIdType pyramid[8] = { 0, 1, 2, 4, 0, 1, 2, 3 };
+    const vtkIdType above[8] = { 0, 1, 2, 4, 5, 6, 7, 8 };
+    grid->InsertNextCell(VTK_HEXAHEDRON, 8, pyramid);
+    if (cells == 2)
+    {
+      grid->InsertNextCell(VTK_HEXAHEDRON, 8, above);
+    }
+    ppiray_test::Scene scene(120, 120);
+    ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.0, 0.8, 0.5);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    scene.Show(mapper, grid, { 2.5, -1.5, 0.4 }, { 0.5, 0.5, 0.75 });
+    mapper->SetHexahedronModeToSubdivide();
+    scene.Window->Render();
+    const auto split = ppiray_test::ReadRGB(scene.Window);
+    mapper->SetHexahedronModeToAccurate();
+    scene.Window->Render();
+    const auto d = ppiray_test::Compare(ppiray_test::ReadRGB(scene.Window), split);
+    const std::string what = cells == 1 ? "pyramid as a hexahedron" : "pyramid under a hexahedron";
+    std::cout << what << ": hexahedra " << mapper->GetNumberOfHexahedra() << ", peels "
+              << mapper->GetNumberOfPeels() << ", against the split: p99 " << d.P99 << " max "
+              << d.Max << "\n";
+    if (mapper->GetNumberOfHexahedra() != cells || mapper->GetNumberOfPeels() != 1 ||
+      d.Max > 2.0)
+    {
+      errors += Fail(what + ": its volume differs from the split");
     }
   }
 

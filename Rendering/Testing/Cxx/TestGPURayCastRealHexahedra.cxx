@@ -33,13 +33,14 @@
 // bounded. Measured p99: 0.48 to 0.52 (Blunt Fin, LOX Post, disk_out_ref),
 // at the 0.5 floor of the GPU's 8-bit rounding: the trilinear difference
 // stays below it on these cells. The bound, 1.5, leaves room for another
-// rasterizer's rounding. UNISIM-II measures 1.13 and is bounded at 3: about
-// 2.5% of its part's covered pixels lose the rest of their ray where it
-// crosses a fault next to a cell edge (a mapper defect, darker only; the same
-// pixels in all three hexahedron modes). The negative control makes the
-// bounds mean something: the same comparison with one layer of the part's
-// cells missing (the 5% of cells nearest the mid-plane across the view, which
-// every ray crosses) must exceed them; it measures 5.5 (LOX Post) to 28.
+// rasterizer's rounding. UNISIM-II measures 0.86 (p99) and 1.6 (p99.9):
+// p99.9 is bounded at 4 to catch rays that lose the rest of their path, as
+// they did at its faults before the march resumed where the previous peel
+// left the mesh (p99 1.13 but p99.9 51, max 91; TestGPURayCastFault). The
+// negative control makes the bounds mean something: the same comparison
+// with one layer of the part's cells missing (the 5% of cells nearest the
+// mid-plane across the view, which every ray crosses) must exceed them; it
+// measures 5.5 (LOX Post) to 23.
 //
 // UNISIM-II: the mapper leaves the 969 flat (zero-volume) cells out with a
 // warning and renders the other 46,641 natively; that is asserted, and that
@@ -111,7 +112,7 @@ constexpr int Size = 300;                    // window and baseline
 constexpr int ReferenceSize = 96;            // the part against the reference
 constexpr double QuadratureTolerance = 1e-4; // reference: scalar off linear per piece, / range
 constexpr double P99Bound = 1.5;             // see the header comment
-constexpr double P99BoundFaults = 3.0;       // UNISIM-II: lost rays at faults, ibid.
+constexpr double P999Bound = 4.0;            // rays lost at faults, ibid.
 constexpr int SkipTest = 125;                // ppiray_add_cxx_tests: SKIP_RETURN_CODE
 
 int Fail(const std::string& what)
@@ -848,7 +849,7 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
   // `part` against the reference, framed in the scene's view direction at
   // ReferenceSize, then the negative control (see the header comment).
   auto referenceCheck = [&](const std::string& name, vtkUnstructuredGrid* part,
-                          ppiray_test::Scene& scene, double p99Bound) {
+                          ppiray_test::Scene& scene) {
     ppiray_test::Scene sub(ReferenceSize, ReferenceSize);
     sub.Volume->SetProperty(scene.Property);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
@@ -874,11 +875,12 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     std::cout << name << " part against the reference: " << part->GetNumberOfCells() << " cells ("
               << CollapsedCells(part) << " collapsed), " << mapper->GetNumberOfHexahedra()
               << " native, " << mapper->GetNumberOfPeels() << " peels, " << ReferenceSize << "x"
-              << ReferenceSize << ", reference " << seconds << " s: p99 " << e.P99 << " max "
-              << e.Max << " mean " << e.Mean << " (1/255)\n";
-    if (mapper->GetNumberOfHexahedra() != part->GetNumberOfCells() || e.P99 > p99Bound)
+              << ReferenceSize << ", reference " << seconds << " s: p99 " << e.P99 << " p99.9 "
+              << e.P999 << " max " << e.Max << " mean " << e.Mean << " (1/255)\n";
+    if (mapper->GetNumberOfHexahedra() != part->GetNumberOfCells() || e.P99 > P99Bound ||
+      e.P999 > P999Bound)
     {
-      errors += Fail(name + ": part not native, or p99 against the reference above the bound");
+      errors += Fail(name + ": part not native, or p99 or p99.9 against the reference above the bound");
     }
     // Negative control: the 5% of the cells nearest the mid-plane across the
     // view direction, a layer about one cell thick that every ray crosses.
@@ -899,7 +901,7 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     std::cout << name << " part without a layer of "
               << part->GetNumberOfCells() - holed->GetNumberOfCells() << " cells: p99 " << lost.P99
               << " max " << lost.Max << " mean " << lost.Mean << "\n";
-    if (lost.P99 <= p99Bound)
+    if (lost.P99 <= P99Bound)
     {
       errors += Fail(name + ": a missing layer of cells passes the p99 bound");
     }
@@ -933,7 +935,7 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     check("BluntFin", grid, scene, mapper);
     std::cout << "BluntFin warnings: [" << messages->Warnings << messages->Errors << "]\n";
     // The leading edge of the fin, where the cells are smallest.
-    referenceCheck("BluntFin", Box(grid, { 0.0, 0.0, 2.0 }, { 1.0, 1.0, 1.0 }), scene, P99Bound);
+    referenceCheck("BluntFin", Box(grid, { 0.0, 0.0, 2.0 }, { 1.0, 1.0, 1.0 }), scene);
   }
 
   // 2. LOX Post, velocity magnitude: the slow wake behind the post most
@@ -969,7 +971,7 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     }
     // A ring of cells around the post (radius 0.5) at mid-height: the hole
     // in the middle.
-    referenceCheck("LOXPost", Box(grid, { 0.0, 0.0, 2.4 }, { 1.0, 1.0, 0.5 }), scene, P99Bound);
+    referenceCheck("LOXPost", Box(grid, { 0.0, 0.0, 2.4 }, { 1.0, 1.0, 0.5 }), scene);
   }
 
   // 3. UNISIM-II, depth: yellow at the top of the reservoir to blue at the
@@ -1041,9 +1043,10 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
               << d.P99 << " max " << d.Max << " mean " << d.Mean << "; coverage " << coverage[0]
               << " and " << coverage[1] << " pixels; whole mesh against the mesh without its flat cells: max " << f.Max
               << "; warnings: [" << messages->Warnings << messages->Errors << "]\n";
-    // Linear depth is exact on both; a few pixels differ where the rays
-    // lost at faults (see the header comment) are not the same ones in the
-    // two, hence p99 and a coverage tolerance of 0.2%, not equality.
+    // Linear depth is exact on both; 39 of 23,914 pixels differ (up to 92)
+    // around pinch-outs, where each loses a few rays the other keeps (before
+    // the handedness and diagonal fixes for collapsed cells: 77). Hence p99
+    // and a coverage tolerance of 0.2%, not equality.
     if (d.P99 > 1.0 || std::abs(coverage[0] - coverage[1]) > coverage[1] / 500)
     {
       errors += Fail("UNISIM: native hexahedra differ from their tetrahedra");
@@ -1054,8 +1057,7 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     }
     mapper->SetHexahedronModeToAccurate();
     // A column of cells through all layers around the centre.
-    referenceCheck(
-      "UNISIM", Box(grid, centre, { 700.0, 700.0, 1e4 }), scene, P99BoundFaults);
+    referenceCheck("UNISIM", Box(grid, centre, { 700.0, 700.0, 1e4 }), scene);
   }
 
   // 4. disk_out_ref, Temp: faint cool gas, the hot rotating disk opaque.
@@ -1085,7 +1087,7 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     scene.Renderer->GetActiveCamera()->Zoom(1.2);
     check("Disk", grid, scene, mapper);
     std::cout << "Disk warnings: [" << messages->Warnings << messages->Errors << "]\n";
-    referenceCheck("Disk", grid, scene, P99Bound); // small enough to compare whole
+    referenceCheck("Disk", grid, scene); // small enough to compare whole
   }
 
   std::cout << "total " << Seconds(testStart) << " s\n";
