@@ -75,6 +75,19 @@ Error AgainstReference(ppiray_test::Scene& scene, vtkFloatArray* exact, int, int
   return ppiray_test::AgainstReference(ppiray_test::ReadRGB(scene.Window), exact);
 }
 
+// The mapper's image natively (HEXAHEDRON_ACCURATE, left set) against the
+// same mesh split into tetrahedra (SUBDIVIDE), per channel in 1/255.
+ppiray_test::ImageDifference NativeAgainstSplit(
+  ppiray_test::Scene& scene, vtkUnstructuredGridGPURayCastMapper* mapper)
+{
+  mapper->SetHexahedronModeToSubdivide();
+  scene.Window->Render();
+  const auto split = ppiray_test::ReadRGB(scene.Window);
+  mapper->SetHexahedronModeToAccurate();
+  scene.Window->Render();
+  return ppiray_test::Compare(ppiray_test::ReadRGB(scene.Window), split);
+}
+
 // Six spikes of width 0.01 over a faint ramp, on scalars in [0, 1].
 void SixSpikes(vtkVolumeProperty* property)
 {
@@ -270,13 +283,7 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     vtkNew<ppiray_test::MessageCollector> messages;
     mapper->AddObserver(vtkCommand::WarningEvent, messages);
     scene.Show(mapper, grid, { 2.0, 1.3, 2.4 }, { 0.5, 0.5, 0.5 });
-    mapper->SetHexahedronModeToSubdivide();
-    scene.Window->Render();
-    const auto split = ppiray_test::ReadRGB(scene.Window);
-    mapper->SetHexahedronModeToAccurate();
-    scene.Window->Render();
-    const auto native = ppiray_test::ReadRGB(scene.Window);
-    const auto d = ppiray_test::Compare(native, split);
+    const auto d = NativeAgainstSplit(scene, mapper);
     // Trilinear against piecewise linear in cells of a third of the block:
     // they differ inside every cell (about 12/255 at p99 here); a leak at the
     // pinch would show as a second peel and black holes.
@@ -306,12 +313,7 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     grid->GetPoints()->GetPoint(PointId(grid, 1, 0, 0), x);
     grid->GetPoints()->SetPoint(PointId(grid, 0, 0, 0), x);
     grid->GetPoints()->Modified();
-    mapper->SetHexahedronModeToSubdivide();
-    scene.Window->Render();
-    const auto split0 = ppiray_test::ReadRGB(scene.Window);
-    mapper->SetHexahedronModeToAccurate();
-    scene.Window->Render();
-    const auto d0 = ppiray_test::Compare(ppiray_test::ReadRGB(scene.Window), split0);
+    const auto d0 = NativeAgainstSplit(scene, mapper);
     std::cout << "collapsed at corner 0: hexahedra " << mapper->GetNumberOfHexahedra()
               << ", peels " << mapper->GetNumberOfPeels() << ", against the split: p99 " << d0.P99
               << " max " << d0.Max << "\n";
@@ -344,12 +346,7 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     }
     grid->GetPoints()->Modified();
     messages->Warnings.clear();
-    mapper->SetHexahedronModeToSubdivide();
-    scene.Window->Render();
-    const auto flatSplit = ppiray_test::ReadRGB(scene.Window);
-    mapper->SetHexahedronModeToAccurate();
-    scene.Window->Render();
-    const auto flat = ppiray_test::Compare(ppiray_test::ReadRGB(scene.Window), flatSplit);
+    const auto flat = NativeAgainstSplit(scene, mapper);
     std::cout << "flattened layer: hexahedra " << mapper->GetNumberOfHexahedra() << ", peels "
               << mapper->GetNumberOfPeels() << ", against the split: p99 " << flat.P99 << " max "
               << flat.Max << "\n";
@@ -396,12 +393,7 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.0, 0.8, 0.5);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
     scene.Show(mapper, grid, { 2.5, -1.5, 0.4 }, { 0.5, 0.5, 0.75 });
-    mapper->SetHexahedronModeToSubdivide();
-    scene.Window->Render();
-    const auto split = ppiray_test::ReadRGB(scene.Window);
-    mapper->SetHexahedronModeToAccurate();
-    scene.Window->Render();
-    const auto d = ppiray_test::Compare(ppiray_test::ReadRGB(scene.Window), split);
+    const auto d = NativeAgainstSplit(scene, mapper);
     const std::string what = cells == 1 ? "pyramid as a hexahedron" : "pyramid under a hexahedron";
     std::cout << what << ": hexahedra " << mapper->GetNumberOfHexahedra() << ", peels "
               << mapper->GetNumberOfPeels() << ", against the split: p99 " << d.P99 << " max "
@@ -455,12 +447,7 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     scene.Show(mapper, grid, { -3.0, 0.5, 0.14 }, { 0.5, 0.5, 0.12 });
     scene.Renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
     scene.Renderer->ResetCamera();
-    mapper->SetHexahedronModeToSubdivide();
-    scene.Window->Render();
-    const auto split = ppiray_test::ReadRGB(scene.Window);
-    mapper->SetHexahedronModeToAccurate();
-    scene.Window->Render();
-    const auto d = ppiray_test::Compare(ppiray_test::ReadRGB(scene.Window), split);
+    const auto d = NativeAgainstSplit(scene, mapper);
     std::cout << "folded face at a grazing angle: hexahedra " << mapper->GetNumberOfHexahedra()
               << ", against the split: p99 " << d.P99 << " max " << d.Max << "\n";
     if (mapper->GetNumberOfHexahedra() != 2 || d.Max > 2.0)
