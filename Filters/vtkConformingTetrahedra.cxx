@@ -146,58 +146,53 @@ double SignedVolume(vtkUnstructuredGrid* grid, const vtkIdType* t)
     6.0;
 }
 
-bool HasUnfoldedFace(const vtkIdType c[8], const ppiray::QuadDiagonals& diagonals)
+// A cone is exact when the cell is star-shaped from its apex. A strongly
+// non-convex cell (a warped hexahedron of a reservoir grid, or one next to a
+// face split against the smallest-id rule) may not be star-shaped from its
+// smallest point: some tetrahedra then lie over triangles seen from behind,
+// with the opposite sign, and overlap the others; the consumers, which orient
+// every tetrahedron by its sign, would count that volume twice. Then the
+// first corner (by id) whose cone has one sign replaces the cone from
+// tets[first] on; if none has, the cone from the smallest point stays.
+template <size_t N>
+void ConeFromStarPoint(vtkUnstructuredGrid* grid, const Face (&faces)[N], const vtkIdType* c,
+  int corners, const ppiray::QuadDiagonals& diagonals, size_t first, std::vector<vtkIdType>& tets)
 {
-  for (const Face& q : HexahedronFaces)
-  {
-    if (diagonals.IsUnfolded(c[q[0]], c[q[1]], c[q[2]], c[q[3]]))
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
-// A cone is exact when the cell is star-shaped from its apex. Next to a face
-// split against the smallest-id rule that may fail for the smallest point:
-// a tetrahedron over a triangle seen from behind has the opposite sign, and
-// the consumers, which orient every tetrahedron by its sign, would add it.
-// Then the first corner (by id) whose cone has one sign replaces the cone
-// from tets[first] on.
-void ConeFromStarPoint(vtkUnstructuredGrid* grid, const vtkIdType c[8],
-  const ppiray::QuadDiagonals& diagonals, size_t first, std::vector<vtkIdType>& tets)
-{
-  auto oneSign = [&](size_t from) {
+  auto oneSign = [&](const std::vector<vtkIdType>& cone) {
+    std::vector<double> volumes;
     double scale = 0;
-    for (size_t t = from; t < tets.size(); t += 4)
+    for (size_t t = first; t < cone.size(); t += 4)
     {
-      scale = std::max(scale, std::abs(SignedVolume(grid, tets.data() + t)));
+      volumes.push_back(SignedVolume(grid, cone.data() + t));
+      scale = std::max(scale, std::abs(volumes.back()));
     }
     int signs[2] = { 0, 0 };
-    for (size_t t = from; t < tets.size(); t += 4)
+    for (double volume : volumes)
     {
-      const double volume = SignedVolume(grid, tets.data() + t);
       signs[volume > 0 ? 0 : 1] += std::abs(volume) > 1e-9 * scale ? 1 : 0;
     }
     return signs[0] == 0 || signs[1] == 0;
   };
-  if (oneSign(first))
+  if (oneSign(tets))
   {
     return;
   }
   int order[8];
-  std::iota(order, order + 8, 0);
-  std::sort(order, order + 8, [&](int a, int b) { return c[a] < c[b]; });
-  for (int apex : order)
+  std::iota(order, order + corners, 0);
+  std::sort(order, order + corners, [&](int a, int b) { return c[a] < c[b]; });
+  for (int i = 1; i < corners; ++i)
   {
-    std::vector<vtkIdType> cone(tets.begin(), tets.begin() + first);
-    AppendCone(HexahedronFaces, c, apex, diagonals, cone);
-    std::swap(cone, tets);
-    if (oneSign(first))
+    if (c[order[i]] == c[order[i - 1]])
     {
+      continue; // the same point
+    }
+    std::vector<vtkIdType> cone(tets.begin(), tets.begin() + first);
+    AppendCone(faces, c, order[i], diagonals, cone);
+    if (oneSign(cone))
+    {
+      tets.swap(cone);
       return;
     }
-    std::swap(cone, tets);
   }
 }
 
@@ -279,12 +274,6 @@ void QuadDiagonals::Build(vtkUnstructuredGrid* grid)
 }
 
 //------------------------------------------------------------------------------
-bool QuadDiagonals::IsUnfolded(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d) const
-{
-  return !this->Unfolded.empty() && this->Unfolded.count(SortedIds(a, b, c, d)) > 0;
-}
-
-//------------------------------------------------------------------------------
 bool QuadDiagonals::AlongFirstDiagonal(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d) const
 {
   if (!this->Unfolded.empty())
@@ -350,16 +339,15 @@ void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, Tetrahe
         break;
       case VTK_HEXAHEDRON:
         AppendCone(HexahedronFaces, corners, apex, diagonals, split.Tets);
-        if (HasUnfoldedFace(corners, diagonals))
-        {
-          ConeFromStarPoint(grid, corners, diagonals, before, split.Tets);
-        }
+        ConeFromStarPoint(grid, HexahedronFaces, corners, 8, diagonals, before, split.Tets);
         break;
       case VTK_WEDGE:
         AppendCone(WedgeFaces, corners, apex, diagonals, split.Tets);
+        ConeFromStarPoint(grid, WedgeFaces, corners, 6, diagonals, before, split.Tets);
         break;
       default:
         AppendCone(PyramidFaces, corners, apex, diagonals, split.Tets);
+        ConeFromStarPoint(grid, PyramidFaces, corners, 5, diagonals, before, split.Tets);
         break;
     }
     split.CellIds.insert(split.CellIds.end(), (split.Tets.size() - before) / 4, cellId);

@@ -15,9 +15,10 @@
  * v, which is their smallest point too, so every face follows the rule.
  * Counts: hexahedron and voxel 6, wedge 3, pyramid 2. The cone is exact for
  * cells that are star-shaped from v (every convex cell). Collapsed hexahedra
- * (repeated corner ids) follow QuadDiagonals; the cone then runs over the
- * triangles that miss v's point id, and a hexahedron with a face split
- * against the rule takes the first corner by id whose cone has one sign. The
+ * (repeated corner ids) follow QuadDiagonals, and the cone runs over the
+ * triangles that miss v's point id. A cell whose cone has tetrahedra of both
+ * signs (not star-shaped from v: strongly warped cells) takes the first
+ * corner by id whose cone has one sign. The
  * field becomes linear in each tetrahedron (the subdivision error hexahedra
  * rendered natively avoid).
  *
@@ -138,8 +139,6 @@ public:
   void AddHexahedron(const vtkIdType c[8]);
   /** True if quadrilateral (a, b, c, d) is split along a-c, false if along b-d. */
   bool AlongFirstDiagonal(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d) const;
-  /** Whether quadrilateral (a, b, c, d) is one of the exceptions. */
-  bool IsUnfolded(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d) const;
   /** Faces split against the smallest-id rule. */
   vtkIdType GetNumberOfUnfoldedFaces() const { return static_cast<vtkIdType>(this->Unfolded.size()); }
 
