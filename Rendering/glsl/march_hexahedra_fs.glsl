@@ -13,8 +13,8 @@
 // neighbour's, so the traversal is watertight on non-planar faces. The exit
 // is the nearest triangle the ray actually crosses; if rounding lets the ray
 // slip between the two (an edge), the nearest face plane it heads out of
-// (the convex-cell rule of the tetrahedral march). The entry triangle is never
-// an exit; the other half of the entry face can be (exitCandidate).
+// (the convex-cell rule of the tetrahedral march). A folded entry face can be
+// the exit too (exitCandidate).
 
 uniform samplerBuffer hexCorners;
 uniform isamplerBuffer hexNeighbors;
@@ -152,30 +152,15 @@ bool crossesTriangle(vec3 p[8], ivec3 v, vec3 origin, vec3 direction, float tf)
     dot(cross(c - b, x - b), normal) >= tolerance && dot(cross(a - c, x - c), normal) >= tolerance;
 }
 
-// The half of face f the ray entered by at t: the triangle whose plane it
-// meets closest to t.
-int enteredHalf(vec3 p[8], int f, int mask, vec3 origin, vec3 direction, float t)
+// Whether a triangle of face f, met at tf, may be where the ray leaves a cell
+// it entered at t through `entryFace`. A triangle of the entry face may, if
+// it is met clearly ahead of t: a non-planar face folded across a grazing ray
+// is crossed twice, and the ray goes back into the cell it came from (seen in
+// UNISIM-II's thin layers). The entry triangle itself, and the other half of
+// a planar face, are met at t: rounding cannot bounce a ray through a face.
+bool exitCandidate(int f, int entryFace, float tf, float t)
 {
-  float gap[2];
-  for (int side = 0; side < 2; ++side)
-  {
-    ivec3 v = faceTriangle(f, side, mask);
-    vec3 normal = cross(p[v.y] - p[v.x], p[v.z] - p[v.x]);
-    float along = dot(normal, direction);
-    gap[side] = along == 0.0 ? INFINITY : abs(dot(normal, p[v.x] - origin) / along - t);
-  }
-  return gap[0] <= gap[1] ? 0 : 1;
-}
-
-// Whether triangle `side` of face f, met at tf, may be where the ray leaves a
-// cell it entered at t by half `entryHalf` of `entryFace`. The other half of
-// the entry face may: a non-planar face folds across a grazing ray, which
-// leaves by it back into the cell it came from (seen in UNISIM-II's thin
-// layers); only ahead of t, so that rounding cannot send the ray back and
-// forth through one face.
-bool exitCandidate(int f, int side, int entryFace, int entryHalf, float tf, float t)
-{
-  return f != entryFace || (side != entryHalf && tf > t + 1.0e-5 * abs(t));
+  return f != entryFace || tf > t + 1.0e-5 * abs(t);
 }
 
 void main()
@@ -225,7 +210,7 @@ void main()
         vec3 normal = cross(p[v.y] - p[v.x], p[v.z] - p[v.x]);
         float along = dot(normal, direction);
         float tf = dot(normal, p[v.x] - origin) / along;
-        if (along > 0.0 && tf < tPlane && exitCandidate(f, side, entryFace, entryHalf, tf, t))
+        if (along > 0.0 && tf < tPlane && exitCandidate(f, entryFace, tf, t))
         {
           tPlane = tf;
           planeFace = f;
@@ -250,7 +235,7 @@ void main()
         float along = dot(normal, direction);
         float tf = dot(normal, p[v.x] - origin) / along;
         if (along > 0.0 && tf < tHit && tf >= t - 1.0e-6 * abs(t) &&
-          exitCandidate(f, side, entryFace, entryHalf, tf, t) &&
+          exitCandidate(f, entryFace, tf, t) &&
           crossesTriangle(p, v, origin, direction, tf))
         {
           tHit = tf;
@@ -302,7 +287,6 @@ void main()
     loadCorners(cell, p);
     mask = texelFetch(hexNeighbors, 2 * cell + 1).z;
     t = tExit;
-    entryHalf = entryFace < 0 ? 0 : enteredHalf(p, entryFace, mask, origin, direction, t);
   }
   fragOutput0 = before + (1.0 - before.a) * color;
   fragOutput1 = vec4(reached);
