@@ -5,12 +5,12 @@
 #include "vtkCellType.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridCellAdjacency.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <numeric>
-#include <set>
 
 namespace
 {
@@ -130,20 +130,36 @@ std::array<vtkIdType, 4> SortedIds(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdT
   return ids;
 }
 
-// Signed volume of tetrahedron (a, b, c, d) of `grid`'s points.
-double SignedVolume(vtkUnstructuredGrid* grid, const vtkIdType* t)
+// Six times the signed volume of tetrahedron t (four point ids of `grid`).
+double SignedVolume6(vtkUnstructuredGrid* grid, const vtkIdType* t)
 {
   double p[4][3];
   for (int i = 0; i < 4; ++i)
   {
     grid->GetPoint(t[i], p[i]);
   }
-  const double u[3] = { p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2] };
-  const double v[3] = { p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2] };
-  const double w[3] = { p[3][0] - p[0][0], p[3][1] - p[0][1], p[3][2] - p[0][2] };
-  return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-           u[2] * (v[0] * w[1] - v[1] * w[0])) /
-    6.0;
+  return vtkUnstructuredGridCellAdjacency::SignedVolume6(p[0], p[1], p[2], p[3]);
+}
+
+// Whether the `n` tetrahedra at `tets` (point ids, 4 each) all have one sign
+// (volumes below 1e-9 of the largest count as none).
+bool OneSign(vtkUnstructuredGrid* grid, const vtkIdType* tets, size_t n)
+{
+  double volumes[12]; // a cone has at most 2 triangles per face of 6
+  n = std::min<size_t>(n, 12);
+  double scale = 0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    volumes[i] = SignedVolume6(grid, tets + 4 * i);
+    scale = std::max(scale, std::abs(volumes[i]));
+  }
+  bool positive = false, negative = false;
+  for (size_t i = 0; i < n; ++i)
+  {
+    positive |= volumes[i] > 1e-9 * scale;
+    negative |= volumes[i] < -1e-9 * scale;
+  }
+  return !(positive && negative);
 }
 
 // A cone is exact when the cell is star-shaped from its apex. A strongly
@@ -158,39 +174,26 @@ template <size_t N>
 void ConeFromStarPoint(vtkUnstructuredGrid* grid, const Face (&faces)[N], const vtkIdType* c,
   int corners, const ppiray::QuadDiagonals& diagonals, size_t first, std::vector<vtkIdType>& tets)
 {
-  auto oneSign = [&](const std::vector<vtkIdType>& cone) {
-    std::vector<double> volumes;
-    double scale = 0;
-    for (size_t t = first; t < cone.size(); t += 4)
-    {
-      volumes.push_back(SignedVolume(grid, cone.data() + t));
-      scale = std::max(scale, std::abs(volumes.back()));
-    }
-    int signs[2] = { 0, 0 };
-    for (double volume : volumes)
-    {
-      signs[volume > 0 ? 0 : 1] += std::abs(volume) > 1e-9 * scale ? 1 : 0;
-    }
-    return signs[0] == 0 || signs[1] == 0;
-  };
-  if (oneSign(tets))
+  if (OneSign(grid, tets.data() + first, (tets.size() - first) / 4))
   {
     return;
   }
   int order[8];
   std::iota(order, order + corners, 0);
   std::sort(order, order + corners, [&](int a, int b) { return c[a] < c[b]; });
+  std::vector<vtkIdType> cone;
   for (int i = 1; i < corners; ++i)
   {
     if (c[order[i]] == c[order[i - 1]])
     {
       continue; // the same point
     }
-    std::vector<vtkIdType> cone(tets.begin(), tets.begin() + first);
+    cone.clear();
     AppendCone(faces, c, order[i], diagonals, cone);
-    if (oneSign(cone))
+    if (OneSign(grid, cone.data(), cone.size() / 4))
     {
-      tets.swap(cone);
+      tets.resize(first);
+      tets.insert(tets.end(), cone.begin(), cone.end());
       return;
     }
   }
@@ -237,9 +240,12 @@ int TetrahedraPerCell(int linearCellType)
 //------------------------------------------------------------------------------
 void QuadDiagonals::AddHexahedron(const vtkIdType c[8])
 {
-  if (std::set<vtkIdType>(c, c + 8).size() == 8)
+  std::array<vtkIdType, 8> sorted;
+  std::copy(c, c + 8, sorted.begin());
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end())
   {
-    return;
+    return; // no repeated corner: nothing can fold
   }
   for (int f = 0; f < 6; ++f)
   {

@@ -33,6 +33,18 @@
 
 namespace
 {
+// Whether triangle p faces away from `centre` (its normal, by its winding,
+// points to the side `centre` is not on).
+bool FacesAway(const double p[3][3], const double centre[3])
+{
+  double e1[3], e2[3], normal[3], out[3];
+  vtkMath::Subtract(p[1], p[0], e1);
+  vtkMath::Subtract(p[2], p[0], e2);
+  vtkMath::Cross(e1, e2, normal);
+  vtkMath::Subtract(p[0], centre, out);
+  return vtkMath::Dot(normal, out) > 0;
+}
+
 int Fail(const char* what)
 {
   std::cerr << "FAILED: " << what << "\n";
@@ -156,12 +168,7 @@ int TestHexahedralCellTextures(int, char*[])
     for (int i = 0; i < 8; ++i)
       for (int k = 0; k < 3; ++k)
         centre[k] += corners[24 * h + 3 * i + k] / 8.0;
-    double e1[3], e2[3], normal[3], out[3];
-    vtkMath::Subtract(p[1], p[0], e1);
-    vtkMath::Subtract(p[2], p[0], e2);
-    vtkMath::Cross(e1, e2, normal);
-    vtkMath::Subtract(p[0], centre, out);
-    inward += vtkMath::Dot(normal, out) <= 0 ? 1 : 0;
+    inward += FacesAway(p, centre) ? 0 : 1;
   }
   std::cout << "inward boundary triangles " << inward << "\n";
   if (inward)
@@ -243,14 +250,13 @@ int TestHexahedralCellTextures(int, char*[])
       for (int v = 0; v < 3; ++v)
         for (int k = 0; k < 3; ++k)
           p[v][k] = q[3 * t[3 * i + v] + k];
-      double e1[3], e2[3], normal[3], out[3];
+      double e1[3], e2[3], normal[3];
       vtkMath::Subtract(p[1], p[0], e1);
       vtkMath::Subtract(p[2], p[0], e2);
       vtkMath::Cross(e1, e2, normal);
-      vtkMath::Subtract(p[0], centroid, out);
-      if (vtkMath::Norm(normal) > 1e-9)
+      if (vtkMath::Norm(normal) > 1e-9) // triangles with area
       {
-        ++facing[vtkMath::Dot(normal, out) > 0 ? 0 : 1];
+        ++facing[FacesAway(p, centroid) ? 0 : 1];
       }
     }
     std::cout << "left-handed pyramid: mirrored " << one->GetNumberOfMirroredHexahedra()
