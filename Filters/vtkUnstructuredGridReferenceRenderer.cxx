@@ -40,18 +40,71 @@ namespace
 {
 using Vec3 = std::array<double, 3>;
 
-// The transfer function as VTK evaluates it, with the scalar values where it
-// may bend: every colour and opacity node, plus uniform subdivisions of
-// curved (midpoint / sharpness) segments.
+// The transfer function as VTK's volume mappers evaluate it (colour through
+// vtkColorTransferFunction::GetTable: its colour space, scale and clamping, a
+// vtkDiscretizableColorTransferFunction continuous), as linear pieces between
+// Breaks: every colour and opacity node, and between nodes the points of a
+// bisection that stops when the function is within Tolerance of linear at
+// the quarter points. Each piece keeps the function's one-sided limits at its
+// ends, so jumps (repeated nodes, Step colour space, clamping off) are exact.
 struct TransferFunction
 {
+  using RGBTau = std::array<double, 4>;
   vtkColorTransferFunction* Color = nullptr;
   vtkPiecewiseFunction* Gray = nullptr;
   vtkPiecewiseFunction* Opacity = nullptr;
   double UnitDistance = 1.0;
   std::vector<double> Breaks;
+  std::vector<RGBTau> Start, End; // piece k: from Breaks[k] to Breaks[k + 1]
+  RGBTau Below = { 0, 0, 0, 0 }, Above = { 0, 0, 0, 0 }; // outside the breaks
+  // The CIEDE2000 colour space costs a colour-path search per GetTable call
+  // and steps its colours by about 1/255: sampled once over its nodes (2^18
+  // samples), read as nearest sample.
+  std::vector<double> Stepped;
+  double SteppedRange[2] = { 0, 0 };
 
-  bool Build(vtkVolumeProperty* property, int subdivisions)
+  // (r, g, b, tau) at n >= 2 evenly spaced scalars from x0 to x1 (one
+  // GetTable call: CIEDE2000 builds its colour path per call).
+  std::vector<RGBTau> Sample(double x0, double x1, int n) const
+  {
+    std::vector<double> rgb(3 * n, 1.0);
+    if (this->Color && this->Stepped.empty() && this->Color->GetScale() == VTK_CTF_LINEAR)
+    {
+      this->Color->GetTable(x0, x1, n, rgb.data());
+    }
+    else if (this->Color) // CIEDE2000, or a log scale (GetTable spaces samples in log10)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const double x = x0 + (x1 - x0) * i / (n - 1);
+        const double u =
+          (x - this->SteppedRange[0]) / (this->SteppedRange[1] - this->SteppedRange[0]);
+        if (u >= 0.0 && u <= 1.0 && !this->Stepped.empty())
+        {
+          // nearest sample: the colours are steps
+          const size_t k = static_cast<size_t>(std::lround(u * (this->Stepped.size() / 3 - 1)));
+          std::copy_n(this->Stepped.data() + 3 * k, 3, rgb.data() + 3 * i);
+        }
+        else
+        {
+          this->Color->GetTable(x, x, 1, rgb.data() + 3 * i);
+        }
+      }
+    }
+    std::vector<RGBTau> v(n);
+    for (int i = 0; i < n; ++i)
+    {
+      const double x = x0 + (x1 - x0) * i / (n - 1);
+      for (int c = 0; c < 3; ++c)
+      {
+        v[i][c] = this->Color ? rgb[3 * i + c] : this->Gray ? this->Gray->GetValue(x) : 1.0;
+      }
+      v[i][3] = this->Opacity->GetValue(x) / this->UnitDistance;
+    }
+    return v;
+  }
+
+  void Build(vtkVolumeProperty* property, double tolerance)
   {
     this->Opacity = property->GetScalarOpacity(0);
     if (property->GetColorChannels(0) == 3)
@@ -67,71 +120,127 @@ struct TransferFunction
     {
       this->UnitDistance = 1.0;
     }
-    // (x, midpoint, sharpness) of the nodes of one function.
-    auto collect = [&](int size, auto node) {
+    if (this->Color && this->Color->GetColorSpace() == VTK_CTF_LAB_CIEDE2000 &&
+      this->Color->GetScale() == VTK_CTF_LINEAR && this->Color->GetSize() > 1)
+    {
+      this->Color->GetRange(this->SteppedRange);
+      this->Stepped.resize(3 << 18);
+      this->Color->GetTable(
+        this->SteppedRange[0], this->SteppedRange[1], 1 << 18, this->Stepped.data());
+      tolerance = std::max(tolerance, 0.25 / 255);
+    }
+    std::vector<double> nodes;
+    auto collect = [&](int size, auto x) {
       for (int i = 0; i < size; ++i)
       {
-        double x, midpoint, sharpness, next = 0;
-        node(i, x, midpoint, sharpness);
-        this->Breaks.push_back(x);
-        if (i + 1 < size)
-        {
-          double m2, s2;
-          node(i + 1, next, m2, s2);
-          if (midpoint != 0.5 || sharpness != 0.0)
-          {
-            for (int k = 1; k < subdivisions; ++k)
-            {
-              this->Breaks.push_back(x + (next - x) * k / subdivisions);
-            }
-          }
-        }
+        nodes.push_back(x(i));
       }
     };
     auto piecewise = [](vtkPiecewiseFunction* f) {
-      return [f](int i, double& x, double& m, double& s) {
+      return [f](int i) {
         double v[4];
         f->GetNodeValue(i, v);
-        x = v[0];
-        m = v[2];
-        s = v[3];
+        return v[0];
       };
     };
     collect(this->Opacity->GetSize(), piecewise(this->Opacity));
     if (this->Color)
     {
-      collect(this->Color->GetSize(), [this](int i, double& x, double& m, double& s) {
+      collect(this->Color->GetSize(), [this](int i) {
         double v[6];
         this->Color->GetNodeValue(i, v);
-        x = v[0];
-        m = v[4];
-        s = v[5];
+        return v[0];
       });
     }
     else if (this->Gray)
     {
       collect(this->Gray->GetSize(), piecewise(this->Gray));
     }
-    std::sort(this->Breaks.begin(), this->Breaks.end());
-    this->Breaks.erase(std::unique(this->Breaks.begin(), this->Breaks.end()), this->Breaks.end());
-    return true;
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    if (nodes.empty())
+    {
+      nodes.push_back(0.0);
+    }
+    const double width = std::max(
+      { nodes.back() - nodes.front(), std::abs(nodes.front()), std::abs(nodes.back()), 1e-300 });
+    const double inside = 1e-13 * width; // one-sided limits are taken this far in
+    this->Below = this->Sample(nodes.front() - inside, nodes.front() - inside, 2)[0];
+    this->Above = this->Sample(nodes.back() + inside, nodes.back() + inside, 2)[0];
+    // Piece [x0, x1] split until linear within tolerance at its quarter points.
+    auto bisect = [&](auto&& self, double x0, double x1) -> void {
+      const std::vector<RGBTau> v = this->Sample(x0, x1, 5);
+      bool linear = true;
+      for (int q = 1; q < 4; ++q)
+      {
+        for (int c = 0; c < 4; ++c)
+        {
+          const double scale = c == 3 ? 1.0 / this->UnitDistance : 1.0;
+          linear = linear &&
+            std::abs(v[q][c] - (v[0][c] + (v[4][c] - v[0][c]) * q / 4.0)) <= tolerance * scale;
+        }
+      }
+      if (linear || x1 - x0 <= 4 * inside)
+      {
+        this->Breaks.push_back(x0);
+        this->Start.push_back(v[0]);
+        this->End.push_back(v[4]);
+        return;
+      }
+      const double xm = 0.5 * (x0 + x1);
+      self(self, x0, xm);
+      self(self, xm, x1);
+    };
+    for (size_t i = 0; i + 1 < nodes.size(); ++i)
+    {
+      bisect(bisect, nodes[i] + inside, nodes[i + 1] - inside);
+    }
+    // Pieces were recorded by their start just inside a node; move the first
+    // piece of each node segment back onto the node.
+    for (double& x : this->Breaks)
+    {
+      const auto node = std::lower_bound(nodes.begin(), nodes.end(), x - 2 * inside);
+      if (node != nodes.end() && std::abs(*node - x) <= 2 * inside)
+      {
+        x = *node;
+      }
+    }
+    this->Breaks.push_back(nodes.back());
   }
 
-  void Evaluate(double s, double rgb[3], double& tau) const
+  // The piece holding scalar s (-1: below the first break, Breaks.size() - 1:
+  // above the last).
+  int Piece(double s) const
   {
-    if (this->Color)
+    return static_cast<int>(std::upper_bound(this->Breaks.begin(), this->Breaks.end(), s) -
+             this->Breaks.begin()) - 1;
+  }
+
+  // rgb and tau at s, on piece k (the linear interpolant of its limits).
+  void Evaluate(double s, int k, double rgb[3], double& tau) const
+  {
+    RGBTau v;
+    if (k < 0)
     {
-      this->Color->GetColor(s, rgb);
+      v = this->Below;
     }
-    else if (this->Gray)
+    else if (k >= static_cast<int>(this->Start.size()))
     {
-      rgb[0] = rgb[1] = rgb[2] = this->Gray->GetValue(s);
+      v = this->Above;
     }
     else
     {
-      rgb[0] = rgb[1] = rgb[2] = 1.0;
+      const double x0 = this->Breaks[k], x1 = this->Breaks[k + 1];
+      const double w = x1 > x0 ? std::min(1.0, std::max(0.0, (s - x0) / (x1 - x0))) : 0.0;
+      for (int c = 0; c < 4; ++c)
+      {
+        v[c] = (1 - w) * this->Start[k][c] + w * this->End[k][c];
+      }
     }
-    tau = this->Opacity->GetValue(s) / this->UnitDistance;
+    rgb[0] = v[0];
+    rgb[1] = v[1];
+    rgb[2] = v[2];
+    tau = v[3];
   }
 };
 
@@ -543,7 +652,7 @@ IsoSurfaces BuildIsoSurfaces(vtkVolumeProperty* property, int mode, vtkLightColl
     std::array<double, 4> c = { 1, 1, 1, 1 };
     if (property->GetColorChannels(0) == 3)
     {
-      property->GetRGBTransferFunction(0)->GetColor(v, c.data());
+      property->GetRGBTransferFunction(0)->GetTable(v, v, 1, c.data());
     }
     else
     {
@@ -621,13 +730,13 @@ void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf,
       {
         continue;
       }
-      // Evaluate just inside the piece: at a clamping-off step the function
-      // jumps exactly at a break.
-      const double sa = s0 + (s1 - s0) * (u0 + 1e-12 * (u1 - u0));
-      const double sb = s0 + (s1 - s0) * (u1 - 1e-12 * (u1 - u0));
+      // The transfer-function piece this ray piece lies in, found at its
+      // middle: at a jump both ends are on a break.
+      const double sa = s0 + (s1 - s0) * u0, sb = s0 + (s1 - s0) * u1;
+      const int piece = tf.Piece(s0 + (s1 - s0) * 0.5 * (u0 + u1));
       double ca[3], cb[3], taua, taub, emitted[3], transparency;
-      tf.Evaluate(sa, ca, taua);
-      tf.Evaluate(sb, cb, taub);
+      tf.Evaluate(sa, piece, ca, taua);
+      tf.Evaluate(sb, piece, cb, taub);
       ppiray::IntegrateLinearPiece(ca, taua, cb, taub, length, emitted, transparency);
       for (int c = 0; c < 3; ++c)
       {
@@ -825,7 +934,7 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
     this->QuadratureTolerance * std::max(scalarRange[1] - scalarRange[0], 1e-300);
 
   TransferFunction tf;
-  tf.Build(this->VolumeProperty, this->CurvedSegmentSubdivisions);
+  tf.Build(this->VolumeProperty, this->TransferFunctionTolerance);
   const IsoSurfaces iso = BuildIsoSurfaces(this->VolumeProperty,
     this->BlendMode == ISOSURFACE ? 2 : (this->EmbedIsoSurfaces ? 1 : 0), this->Lights);
 
@@ -1049,7 +1158,7 @@ void vtkUnstructuredGridReferenceRenderer::PrintSelf(ostream& os, vtkIndent inde
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ImageSize: " << this->ImageSize[0] << " x " << this->ImageSize[1] << "\n";
-  os << indent << "CurvedSegmentSubdivisions: " << this->CurvedSegmentSubdivisions << "\n";
+  os << indent << "TransferFunctionTolerance: " << this->TransferFunctionTolerance << "\n";
   os << indent << "QuadratureTolerance: " << this->QuadratureTolerance << "\n";
   os << indent << "BlendMode: " << this->BlendMode << "\n";
   os << indent << "EmbedIsoSurfaces: " << this->EmbedIsoSurfaces << "\n";

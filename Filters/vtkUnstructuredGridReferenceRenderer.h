@@ -14,9 +14,10 @@
  * cell (barycentric coordinates, no adjacency: non-convex meshes, holes and
  * separate parts need nothing special), splits them at every colour and
  * opacity node value, and integrates each piece in closed form
- * (vtkVolumeIntegrals.h). Curved transfer-function segments (non-default
- * midpoint or sharpness) are split into CurvedSegmentSubdivisions linear
- * pieces. No early termination. Deterministic; OpenMP over screen tiles.
+ * (vtkVolumeIntegrals.h). The transfer function is VTK's own evaluation
+ * (vtkColorTransferFunction::GetTable, vtkPiecewiseFunction::GetValue), split
+ * between nodes by bisection until linear within TransferFunctionTolerance.
+ * No early termination. Deterministic; OpenMP over screen tiles.
  *
  * Independent of the GPU path by construction (no shared traversal, transfer
  * function or integration code), so that each checks the other.
@@ -79,9 +80,12 @@ public:
   ///@}
 
   ///@{
-  /** Linear pieces per curved transfer-function segment (default 64). */
-  vtkSetClampMacro(CurvedSegmentSubdivisions, int, 1, 100000);
-  vtkGetMacro(CurvedSegmentSubdivisions, int);
+  /**
+   * Largest deviation of colour (in [0, 1]) and opacity from linear on a
+   * transfer-function piece (default 1e-5, 1/400 of 1/255).
+   */
+  vtkSetClampMacro(TransferFunctionTolerance, double, 1e-9, 0.1);
+  vtkGetMacro(TransferFunctionTolerance, double);
   ///@}
 
   ///@{
@@ -129,7 +133,7 @@ protected:
   vtkVolumeProperty* VolumeProperty = nullptr;
   vtkCamera* Camera = nullptr;
   int ImageSize[2] = { 256, 256 };
-  int CurvedSegmentSubdivisions = 64;
+  double TransferFunctionTolerance = 1e-5;
   double QuadratureTolerance = 1e-6;
   int BlendMode = COMPOSITE;
   vtkTypeBool EmbedIsoSurfaces = 0;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 vtkStandardNewMacro(vtkTransferFunctionControlPoints);
 
@@ -15,124 +16,149 @@ namespace
 {
 using Sample = std::array<double, 4>; // r, g, b, opacity
 
+// The transfer functions as VTK's volume mappers evaluate them: colour through
+// vtkColorTransferFunction::GetTable (the continuous function in its colour
+// space and scale, with its clamping; non-virtual, so a
+// vtkDiscretizableColorTransferFunction is not discretized, as in
+// vtkOpenGLVolumeRGBTable), grey and opacity through vtkPiecewiseFunction::GetValue.
 struct TransferFunctions
 {
   vtkColorTransferFunction* Color = nullptr;
   vtkPiecewiseFunction* Gray = nullptr;
   vtkPiecewiseFunction* Opacity = nullptr;
 
-  bool ColorClampedOff(double x, int side) const
+  // The functions at n >= 2 evenly spaced scalars from x0 to x1, in one
+  // GetTable call (the CIEDE2000 space builds its colour path per call).
+  std::vector<Sample> Evaluate(double x0, double x1, int n) const
   {
-    double range[2];
-    if (this->Color)
+    std::vector<double> rgb(3 * n, 1.0);
+    if (this->Color && this->Dense.empty() && this->Color->GetScale() == VTK_CTF_LINEAR)
     {
-      if (this->Color->GetClamping() || this->Color->GetSize() == 0)
-      {
-        return false;
-      }
-      this->Color->GetRange(range);
+      this->Color->GetTable(x0, x1, n, rgb.data());
     }
-    else
+    else if (this->Color && this->Dense.empty())
     {
-      if (!this->Gray || this->Gray->GetClamping() || this->Gray->GetSize() == 0)
+      for (int i = 0; i < n; ++i) // a log scale spaces GetTable's samples evenly in log10
       {
-        return false;
+        const double x = i == n - 1 ? x1 : x0 + (x1 - x0) * i / (n - 1);
+        this->Color->GetTable(x, x, 1, rgb.data() + 3 * i);
       }
-      this->Gray->GetRange(range);
     }
-    return (side < 0 && x <= range[0]) || (side > 0 && x >= range[1]);
+    else if (this->Color)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        this->DenseColor(i == n - 1 ? x1 : x0 + (x1 - x0) * i / (n - 1), rgb.data() + 3 * i);
+      }
+    }
+    std::vector<Sample> samples(n);
+    for (int i = 0; i < n; ++i)
+    {
+      const double x = i == n - 1 ? x1 : x0 + (x1 - x0) * i / (n - 1);
+      const double gray = this->Gray ? this->Gray->GetValue(x) : 1.0;
+      samples[i] = { this->Color ? rgb[3 * i] : gray, this->Color ? rgb[3 * i + 1] : gray,
+        this->Color ? rgb[3 * i + 2] : gray, this->Opacity->GetValue(x) };
+    }
+    return samples;
   }
 
-  bool OpacityClampedOff(double x, int side) const
+  // VTK's CIEDE2000 space searches a colour path in every GetTable call (0.1 s
+  // here) and its colours step by about 1/255 along it: inside the colour
+  // nodes it is sampled once, DenseSamples per scalar range, and read by
+  // linear interpolation.
+  static constexpr int DenseSamples = 1 << 16;
+  std::vector<double> Dense;
+  double DenseRange[2] = { 0, 0 };
+
+  void SampleDensely()
   {
-    if (this->Opacity->GetClamping() || this->Opacity->GetSize() == 0)
+    if (!this->Color || this->Color->GetColorSpace() != VTK_CTF_LAB_CIEDE2000 ||
+      this->Color->GetScale() != VTK_CTF_LINEAR || this->Color->GetSize() < 2)
     {
-      return false;
+      return;
     }
-    const double* range = this->Opacity->GetRange();
-    return (side < 0 && x <= range[0]) || (side > 0 && x >= range[1]);
+    this->Color->GetRange(this->DenseRange);
+    this->Dense.resize(3 * DenseSamples);
+    this->Color->GetTable(
+      this->DenseRange[0], this->DenseRange[1], DenseSamples, this->Dense.data());
   }
 
-  // The functions at x; side -1/+1 take the left/right limit, which differ
-  // only at the ends of a function with clamping off (zero outside).
-  Sample Evaluate(double x, int side = 0) const
+  void DenseColor(double x, double rgb[3]) const
   {
-    Sample s = { 0.0, 0.0, 0.0, 0.0 };
-    if (!this->ColorClampedOff(x, side))
+    const double u = (x - this->DenseRange[0]) / (this->DenseRange[1] - this->DenseRange[0]);
+    if (!(u >= 0.0 && u <= 1.0))
     {
-      if (this->Color)
-      {
-        this->Color->GetColor(x, s.data());
-      }
-      else if (this->Gray)
-      {
-        s[0] = s[1] = s[2] = this->Gray->GetValue(x);
-      }
-      else
-      {
-        s[0] = s[1] = s[2] = 1.0;
-      }
+      this->Color->GetTable(x, x, 1, rgb);
+      return;
     }
-    if (!this->OpacityClampedOff(x, side))
+    const double f = u * (DenseSamples - 1);
+    const int i = std::min(static_cast<int>(f), DenseSamples - 2);
+    const double w = f - i;
+    for (int c = 0; c < 3; ++c)
     {
-      s[3] = this->Opacity->GetValue(x);
+      rgb[c] = (1.0 - w) * this->Dense[3 * i + c] + w * this->Dense[3 * i + 3 + c];
     }
-    return s;
   }
 
-  // Whether the colour or opacity segment starting at or containing [x0, x1]
-  // may be curved: a node with a non-default midpoint or sharpness.
-  bool MayBeCurved(double x0, double x1) const
+  // One-sided limits at x, {below, above}: the functions jump at repeated
+  // nodes, at the ends of a function with clamping off, between the nodes of
+  // the Step colour space and at the midpoint of a segment of sharpness 1.
+  std::vector<Sample> Limits(double x) const
   {
-    auto curved = [&](int size, auto node) {
-      for (int i = 0; i + 1 < size; ++i)
+    return this->Evaluate(std::nextafter(x, -std::numeric_limits<double>::infinity()),
+      std::nextafter(x, std::numeric_limits<double>::infinity()), 2);
+  }
+
+  // Scalar values of every colour, grey and opacity node, sorted, unique.
+  std::vector<double> Nodes() const
+  {
+    std::vector<double> nodes;
+    auto collect = [&nodes](int size, auto x) {
+      for (int i = 0; i < size; ++i)
       {
-        double v[6];
-        node(i, v);
-        double next[6];
-        node(i + 1, next);
-        if (next[0] <= x0 || v[0] >= x1)
-        {
-          continue;
-        }
-        if (v[4] != 0.5 || v[5] != 0.0)
-        {
-          return true;
-        }
+        nodes.push_back(x(i));
       }
-      return false;
     };
-    bool result = curved(this->Opacity->GetSize(), [&](int i, double* v) {
-      this->Opacity->GetNodeValue(i, v);
-      v[4] = v[2];
-      v[5] = v[3];
-    });
+    auto piecewise = [](vtkPiecewiseFunction* f) {
+      return [f](int i) {
+        double v[4];
+        f->GetNodeValue(i, v);
+        return v[0];
+      };
+    };
+    collect(this->Opacity->GetSize(), piecewise(this->Opacity));
     if (this->Color)
     {
-      result = result || curved(this->Color->GetSize(), [&](int i, double* v) {
+      collect(this->Color->GetSize(), [this](int i) {
+        double v[6];
         this->Color->GetNodeValue(i, v);
+        return v[0];
       });
     }
     else if (this->Gray)
     {
-      result = result || curved(this->Gray->GetSize(), [&](int i, double* v) {
-        this->Gray->GetNodeValue(i, v);
-        v[4] = v[2];
-        v[5] = v[3];
-      });
+      collect(this->Gray->GetSize(), piecewise(this->Gray));
     }
-    return result;
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    return nodes;
   }
 };
 
-double MaxDeviation(const Sample& value, const Sample& a, const Sample& b, double w)
+// max_c |value_c - lerp(a_c, b_c, w)|
+double DistanceToChord(const Sample& value, const Sample& a, const Sample& b, double w)
 {
-  double deviation = 0.0;
+  double distance = 0.0;
   for (int c = 0; c < 4; ++c)
   {
-    deviation = std::max(deviation, std::abs(value[c] - ((1.0 - w) * a[c] + w * b[c])));
+    distance = std::max(distance, std::abs(value[c] - ((1.0 - w) * a[c] + w * b[c])));
   }
-  return deviation;
+  return distance;
+}
+
+double MaxDifference(const Sample& a, const Sample& b)
+{
+  return DistanceToChord(a, b, b, 0.0);
 }
 }
 
@@ -141,6 +167,7 @@ bool vtkTransferFunctionControlPoints::Build(vtkVolumeProperty* property, int co
 {
   this->Values.clear();
   this->ColorAttenuation.clear();
+  this->Truncated = false;
   if (!property || !property->GetScalarOpacity(component))
   {
     return false;
@@ -155,82 +182,77 @@ bool vtkTransferFunctionControlPoints::Build(vtkVolumeProperty* property, int co
   {
     tf.Gray = property->GetGrayTransferFunction(component);
   }
-
-  // Union of the nodes.
-  std::vector<double> nodes;
-  for (int i = 0; i < tf.Opacity->GetSize(); ++i)
-  {
-    double v[4];
-    tf.Opacity->GetNodeValue(i, v);
-    nodes.push_back(v[0]);
-  }
-  if (tf.Color)
-  {
-    for (int i = 0; i < tf.Color->GetSize(); ++i)
-    {
-      double v[6];
-      tf.Color->GetNodeValue(i, v);
-      nodes.push_back(v[0]);
-    }
-  }
-  else if (tf.Gray)
-  {
-    for (int i = 0; i < tf.Gray->GetSize(); ++i)
-    {
-      double v[4];
-      tf.Gray->GetNodeValue(i, v);
-      nodes.push_back(v[0]);
-    }
-  }
-  std::sort(nodes.begin(), nodes.end());
-  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  tf.SampleDensely();
+  // The CIEDE2000 steps are followed to half a step.
+  const double tolerance =
+    tf.Dense.empty() ? this->Tolerance : std::max(this->Tolerance, 0.5 / 255);
+  std::vector<double> nodes = tf.Nodes();
   if (nodes.empty())
   {
     nodes.push_back(0.0);
   }
+  // A jump is located to this width; narrower, two points are one step.
+  const double resolution =
+    1e-12 *
+    std::max({ nodes.back() - nodes.front(), std::abs(nodes.front()), std::abs(nodes.back()) });
 
-  // Control points: nodes, then bisection of curved segments.
   std::vector<std::pair<double, Sample>> points;
-  auto add = [&](double x, const Sample& s) { points.emplace_back(x, s); };
   const size_t budget = static_cast<size_t>(this->MaximumNumberOfControlPoints);
-  // Refine [x0, x1] (values a, b) until the midpoint and quarter points are
-  // within Tolerance of the chord; adds the interior points in order.
-  auto refine = [&](auto&& self, double x0, const Sample& a, double x1, const Sample& b,
-                  int depth) -> void {
-    const double xm = 0.5 * (x0 + x1);
-    const Sample m = tf.Evaluate(xm);
-    const double deviation = std::max({ MaxDeviation(m, a, b, 0.5),
-      MaxDeviation(tf.Evaluate(0.5 * (x0 + xm)), a, b, 0.25),
-      MaxDeviation(tf.Evaluate(0.5 * (xm + x1)), a, b, 0.75) });
-    if (deviation <= this->Tolerance || depth >= 24 || points.size() + 2 > budget)
+  auto add = [&](double x, const Sample& s) {
+    if (points.size() < budget)
     {
+      points.emplace_back(x, s);
+    }
+    else
+    {
+      this->Truncated = true;
+    }
+  };
+  // Bisect [x0, x1] (values a, b at its ends) until the chord is within
+  // Tolerance of the function at seven interior points; adds interior points in
+  // order. A jump inside is narrowed down to `resolution`.
+  auto refine = [&](auto&& self, double x0, const Sample& a, double x1, const Sample& b) -> void {
+    const std::vector<Sample> inside = tf.Evaluate(x0, x1, 9);
+    double distance = 0.0;
+    for (int k = 1; k < 8; ++k)
+    {
+      distance = std::max(distance, DistanceToChord(inside[k], a, b, k / 8.0));
+    }
+    if (distance <= tolerance || x1 - x0 <= resolution || points.size() >= budget)
+    {
+      this->Truncated = this->Truncated || (distance > tolerance && x1 - x0 > resolution);
       return;
     }
-    self(self, x0, a, xm, m, depth + 1);
-    add(xm, m);
-    self(self, xm, m, x1, b, depth + 1);
+    const double xm = 0.5 * (x0 + x1);
+    self(self, x0, a, xm, inside[4]);
+    add(xm, inside[4]);
+    self(self, xm, inside[4], x1, b);
   };
 
+  // Each node as its left and, where the function jumps, its right limit;
+  // between nodes, the refined segment. Outside, constant extension of the
+  // first and last points.
+  std::vector<Sample> limits = tf.Limits(nodes[0]);
   for (size_t i = 0; i < nodes.size(); ++i)
   {
     const double x = nodes[i];
-    const Sample left = tf.Evaluate(x, -1);
-    const Sample right = tf.Evaluate(x, +1);
-    add(x, left);
-    if (left != right)
+    add(x, limits[0]);
+    if (MaxDifference(limits[0], limits[1]) > 0.5 * tolerance)
     {
-      add(x, right);
+      add(x, limits[1]);
     }
-    if (i + 1 < nodes.size() && tf.MayBeCurved(x, nodes[i + 1]))
+    if (i + 1 < nodes.size())
     {
-      refine(refine, x, right, nodes[i + 1], tf.Evaluate(nodes[i + 1], -1), 0);
+      const Sample start = points.back().second;
+      limits = tf.Limits(nodes[i + 1]);
+      refine(refine, x, start, nodes[i + 1], limits[0]);
     }
   }
-  if (points.size() > budget)
+  if (this->Truncated)
   {
-    vtkWarningMacro("Transfer function needs more than " << budget
-                                                         << " control points; truncated.");
-    points.resize(budget);
+    vtkWarningMacro("The transfer function needs more than "
+      << budget << " control points to stay within " << tolerance
+      << " of VTK's evaluation; the rest of its scalar range is linearly interpolated.");
   }
 
   double unitDistance = property->GetScalarOpacityUnitDistance(component);
@@ -252,12 +274,12 @@ bool vtkTransferFunctionControlPoints::Build(vtkVolumeProperty* property, int co
 }
 
 //------------------------------------------------------------------------------
-std::vector<float> vtkTransferFunctionControlPoints::GetTexels() const
+std::vector<float> vtkTransferFunctionControlPoints::GetTexels(double shift) const
 {
   std::vector<float> texels(8 * this->Values.size(), 0.0f);
   for (size_t i = 0; i < this->Values.size(); ++i)
   {
-    texels[8 * i + 0] = static_cast<float>(this->Values[i]);
+    texels[8 * i + 0] = static_cast<float>(this->Values[i] - shift);
     texels[8 * i + 1] = static_cast<float>(this->ColorAttenuation[4 * i + 3]);
     texels[8 * i + 4] = static_cast<float>(this->ColorAttenuation[4 * i + 0]);
     texels[8 * i + 5] = static_cast<float>(this->ColorAttenuation[4 * i + 1]);
@@ -273,4 +295,5 @@ void vtkTransferFunctionControlPoints::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "MaximumNumberOfControlPoints: " << this->MaximumNumberOfControlPoints << "\n";
   os << indent << "NumberOfControlPoints: " << this->GetNumberOfControlPoints() << "\n";
+  os << indent << "Truncated: " << this->Truncated << "\n";
 }

@@ -5,14 +5,20 @@
  * The ray integral is exact per piece only where colour and attenuation are
  * linear in the scalar (Moreland & Angel 2004; Espinha & Celes 2005, Sec. 3.2),
  * so the transfer function is turned into control points (s_i, rgb_i, tau_i)
- * with linear interpolation between them and constant extension outside:
- * - the union of the colour and scalar-opacity nodes;
- * - a segment whose nodes have a non-default midpoint or sharpness (curved)
- *   is bisected until the linear interpolant is within Tolerance of the
- *   function at every bisection midpoint (colour in [0, 1], opacity in [0, 1]),
- *   up to MaximumNumberOfControlPoints in total;
- * - a function with clamping off is zero outside its range: a step is two
- *   control points at the same scalar.
+ * with linear interpolation between them and constant extension outside.
+ * The function is the one VTK's volume mappers render: colour from
+ * vtkColorTransferFunction::GetTable (every colour space, log scale, clamping;
+ * a vtkDiscretizableColorTransferFunction continuous, as in
+ * vtkOpenGLVolumeRGBTable), opacity from vtkPiecewiseFunction::GetValue.
+ * - every colour and opacity node is a control point, taken twice (its left
+ *   and right limits) where the function jumps there: repeated nodes, the
+ *   ends of a function with clamping off, the Step colour space;
+ * - each segment between nodes is bisected until the chord is within
+ *   Tolerance of VTK's evaluation at seven interior points of every piece
+ *   (colour in [0, 1], opacity in [0, 1]); a jump inside a segment (sharpness
+ *   1) is narrowed down to 1e-12 of the scalar range, a step in single
+ *   precision;
+ * - at most MaximumNumberOfControlPoints, with a warning past that.
  * Attenuation follows VTK's unstructured mappers: tau = opacity / unit
  * distance, emission = colour * tau.
  */
@@ -35,8 +41,8 @@ public:
 
   ///@{
   /**
-   * Largest deviation of the piecewise-linear interpolant from a curved
-   * segment (default 1/1024 of the colour and opacity range [0, 1]).
+   * Largest deviation of the piecewise-linear interpolant from the transfer
+   * function (default 0.1/255 of the colour and opacity range [0, 1]).
    */
   vtkSetClampMacro(Tolerance, double, 1e-6, 0.1);
   vtkGetMacro(Tolerance, double);
@@ -66,17 +72,25 @@ public:
   const std::vector<double>& GetColorAttenuation() const { return this->ColorAttenuation; }
 
   /**
-   * Two RGBA32F texels per control point, (s, tau, 0, 0) then (r, g, b, 0):
-   * the layout the march shader reads.
+   * Whether the last Build() stopped at MaximumNumberOfControlPoints before
+   * reaching Tolerance.
    */
-  std::vector<float> GetTexels() const;
+  bool GetTruncated() const { return this->Truncated; }
+
+  /**
+   * Two RGBA32F texels per control point, (s - shift, tau, 0, 0) then
+   * (r, g, b, 0): the layout the march shader reads, with the scalar stored
+   * relative to `shift` as the field is.
+   */
+  std::vector<float> GetTexels(double shift = 0.0) const;
 
 protected:
   vtkTransferFunctionControlPoints() = default;
   ~vtkTransferFunctionControlPoints() override = default;
 
-  double Tolerance = 1.0 / 1024.0;
+  double Tolerance = 0.1 / 255.0;
   int MaximumNumberOfControlPoints = 4096;
+  bool Truncated = false;
   std::vector<double> Values;
   std::vector<double> ColorAttenuation;
 

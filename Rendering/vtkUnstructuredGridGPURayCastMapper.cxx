@@ -6,6 +6,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkContourValues.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkHexahedralCellTextures.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -79,7 +80,14 @@ public:
   bool GeometryValid = false;
   vtkDataArray* FieldArray = nullptr;
   int FieldCellFlag = -1;
+  int FieldVectorMode = -2;
+  int FieldVectorComponent = -1;
   vtkTimeStamp FieldTime;
+  // The scalar values rendered (the magnitude or one component) relative to
+  // FieldShift, when they are not the array itself.
+  vtkNew<vtkDoubleArray> FieldValues;
+  double FieldShift = 0.0;
+  double TexelShift = 0.0; // the shift TransferFunctionTexels were made with
   vtkVolumeProperty* Property = nullptr;
   vtkTimeStamp TransferFunctionCheckTime; // when the property was last looked at
   vtkTimeStamp TransferFunctionTime;      // when its control points last changed
@@ -205,6 +213,25 @@ public:
 
 namespace
 {
+// Whether every point coordinate is finite.
+bool FiniteCoordinates(vtkPoints* points)
+{
+  if (!points)
+  {
+    return true;
+  }
+  vtkDataArray* data = points->GetData();
+  const vtkIdType n = data->GetNumberOfValues();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (!std::isfinite(data->GetComponent(i / 3, static_cast<int>(i % 3))))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 // Column-major float copy of a row-major VTK matrix, for glUniformMatrix4fv.
 void ColumnMajor(vtkMatrix4x4* m, float out[16])
 {
@@ -443,6 +470,12 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateGeometry(vtkUnstructuredGridBase
     grid = in.InputCopy;
   }
   in.Native = false;
+  if (!FiniteCoordinates(grid->GetPoints()))
+  {
+    vtkErrorMacro("The input has infinite or NaN point coordinates; nothing is rendered.");
+    in.GeometryValid = false;
+    return false;
+  }
   if (wantsNative && this->UpdateHexahedralGeometry(grid))
   {
     return in.GeometryValid;
@@ -562,25 +595,80 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateField(vtkUnstructuredGridBase* i
     in.FieldCellFlag = -2;
     return false;
   }
+  const int components = scalars->GetNumberOfComponents();
+  const int vectorMode = components > 1 ? this->VectorMode : COMPONENT;
+  const int component = vectorMode == MAGNITUDE ? -1
+                                                : std::min(std::max(this->VectorComponent, 0),
+                                                    components - 1);
   if (in.FieldArray == scalars && in.FieldCellFlag == cellFlag &&
+    in.FieldVectorMode == vectorMode && in.FieldVectorComponent == component &&
     scalars->GetMTime() <= in.FieldTime.GetMTime())
   {
-    return true;
+    return in.FieldArray != nullptr;
   }
-  if (scalars->GetNumberOfComponents() > 1)
+  if (component != this->VectorComponent && vectorMode == COMPONENT && components > 1)
   {
-    vtkWarningMacro("Scalar array " << (scalars->GetName() ? scalars->GetName() : "")
-                                    << " has " << scalars->GetNumberOfComponents()
-                                    << " components; rendering the first.");
+    vtkWarningMacro("VectorComponent " << this->VectorComponent << " is not a component of "
+                                       << (scalars->GetName() ? scalars->GetName() : "the array")
+                                       << " (" << components << " components); using "
+                                       << component << ".");
   }
   in.FieldArray = scalars;
   in.FieldCellFlag = cellFlag;
-  scalars->GetRange(in.FieldRange, 0);
+  in.FieldVectorMode = vectorMode;
+  in.FieldVectorComponent = component;
   in.FieldTime.Modified();
   in.FieldOnGPU = false;
+  double range[2];
+  scalars->GetRange(range, component); // NaN left out; component -1: magnitude
+  if (std::isinf(range[0]) || std::isinf(range[1]))
+  {
+    vtkErrorMacro("Scalar array " << (scalars->GetName() ? scalars->GetName() : "")
+                                  << " has infinite values; nothing is rendered.");
+    in.FieldArray = nullptr;
+    return false;
+  }
+  if (!(range[0] <= range[1]))
+  {
+    range[0] = range[1] = 0.0; // every value NaN: every cell empty
+  }
+  in.FieldRange[0] = range[0];
+  in.FieldRange[1] = range[1];
+  // Stored relative to the range's centre when it lies far from zero
+  // compared to its width (1e6 + O(1) keeps its digits in single precision),
+  // as coordinates are relative to the bounds' centre.
+  const double centre = 0.5 * (range[0] + range[1]);
+  in.FieldShift = std::abs(centre) > range[1] - range[0] ? centre : 0.0;
+  vtkDataArray* values = scalars;
+  if (components > 1 || in.FieldShift != 0.0)
+  {
+    const vtkIdType n = scalars->GetNumberOfTuples();
+    in.FieldValues->SetNumberOfComponents(1);
+    in.FieldValues->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double value;
+      if (component < 0)
+      {
+        double squares = 0.0;
+        for (int c = 0; c < components; ++c)
+        {
+          const double v = scalars->GetComponent(i, c);
+          squares += v * v;
+        }
+        value = std::sqrt(squares);
+      }
+      else
+      {
+        value = scalars->GetComponent(i, component);
+      }
+      in.FieldValues->SetValue(i, value - in.FieldShift);
+    }
+    values = in.FieldValues;
+  }
   if (in.Native)
   {
-    in.Hexes->BuildField(scalars, cellFlag == 1, 0);
+    in.Hexes->BuildField(values, cellFlag == 1, 0);
     if (in.Hexes->GetNumberOfNaNScalars() > 0)
     {
       vtkWarningMacro(<< in.Hexes->GetNumberOfNaNScalars()
@@ -588,7 +676,7 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateField(vtkUnstructuredGridBase* i
     }
     return true;
   }
-  in.Cells->BuildField(scalars, cellFlag == 1, 0);
+  in.Cells->BuildField(values, cellFlag == 1, 0);
   if (in.Cells->GetNumberOfNaNScalars() > 0)
   {
     vtkWarningMacro(<< in.Cells->GetNumberOfNaNScalars()
@@ -601,7 +689,9 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateField(vtkUnstructuredGridBase* i
 bool vtkUnstructuredGridGPURayCastMapper::UpdateTransferFunction(vtkVolumeProperty* property)
 {
   vtkInternals& in = *this->Internals;
-  if (in.Property == property && property->GetMTime() <= in.TransferFunctionCheckTime.GetMTime())
+  if (in.Property == property &&
+    property->GetMTime() <= in.TransferFunctionCheckTime.GetMTime() &&
+    in.TexelShift == in.FieldShift)
   {
     return in.ControlPoints->GetNumberOfControlPoints() > 0;
   }
@@ -617,7 +707,8 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateTransferFunction(vtkVolumeProper
   }
   // A property can be Modified() without a new transfer function (ParaView
   // touches its lookup tables while rendering): only new control points count.
-  std::vector<float> texels = in.ControlPoints->GetTexels();
+  in.TexelShift = in.FieldShift;
+  std::vector<float> texels = in.ControlPoints->GetTexels(in.FieldShift);
   if (texels != in.TransferFunctionTexels)
   {
     in.TransferFunctionTexels = std::move(texels);
@@ -1083,8 +1174,9 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
     {
       textures.push_back(in.FullTableTexture);
       names.push_back("preIntegrationTable");
-      const float range[2] = { static_cast<float>(in.FullTable->GetScalarRange()[0]),
-        static_cast<float>(in.FullTable->GetScalarRange()[1]) };
+      const double* tableRange = in.FullTable->GetScalarRange();
+      const float range[2] = { static_cast<float>(tableRange[0] - in.FieldShift),
+        static_cast<float>(tableRange[1] - in.FieldShift) };
       const float size[3] = { static_cast<float>(in.FullTable->GetScalarSize()),
         static_cast<float>(in.FullTable->GetScalarSize()),
         static_cast<float>(in.FullTable->GetLengthSize()) };
@@ -1210,13 +1302,13 @@ void vtkUnstructuredGridGPURayCastMapper::SetIsoSurfaceUniforms(
     double rgb[3] = { 1, 1, 1 };
     if (property->GetColorChannels(0) == 3)
     {
-      property->GetRGBTransferFunction(0)->GetColor(values[i], rgb);
+      property->GetRGBTransferFunction(0)->GetTable(values[i], values[i], 1, rgb);
     }
     else
     {
       rgb[0] = rgb[1] = rgb[2] = property->GetGrayTransferFunction(0)->GetValue(values[i]);
     }
-    isoValues[i] = static_cast<float>(values[i]);
+    isoValues[i] = static_cast<float>(values[i] - this->Internals->FieldShift);
     for (int c = 0; c < 3; ++c)
     {
       isoColors[i][c] = static_cast<float>(rgb[c]);
@@ -1309,6 +1401,9 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "IntegrationMode: " << this->GetIntegrationModeAsString() << "\n";
   os << indent << "HexahedronMode: " << this->GetHexahedronModeAsString() << "\n";
   os << indent << "EmbedIsoSurfaces: " << this->EmbedIsoSurfaces << "\n";
+  os << indent << "VectorMode: " << (this->VectorMode == MAGNITUDE ? "MAGNITUDE" : "COMPONENT")
+     << "\n";
+  os << indent << "VectorComponent: " << this->VectorComponent << "\n";
   os << indent << "MaximumNumberOfPeels: " << this->MaximumNumberOfPeels << "\n";
   os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
   os << indent << "PsiTableSize: " << this->PsiTableSize << "\n";

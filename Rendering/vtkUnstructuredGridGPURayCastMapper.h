@@ -13,7 +13,11 @@
  * Semantics are those of VTK's unstructured volume mappers: attenuation
  * tau(s) = opacity(s) / ScalarOpacityUnitDistance, emission colour(s) tau(s).
  * Scalars are chosen with the vtkAbstractVolumeMapper API (SetScalarMode,
- * SelectScalarArray); point or cell data; the first component is used.
+ * SelectScalarArray); point or cell data; of a multi-component array the
+ * magnitude or one component (SetVectorMode, as vtkSmartVolumeMapper).
+ * Transfer functions are rendered as VTK's volume mappers evaluate them
+ * (vtkTransferFunctionControlPoints); infinite scalars or coordinates are
+ * rejected with an error.
  * Opaque geometry already in the depth buffer stops the rays.
  *
  * Caches, each rebuilt for one reason (counted, see Get*UploadCount()):
@@ -156,6 +160,31 @@ public:
   ///@}
 
   /**
+   * What a multi-component scalar array contributes (as vtkSmartVolumeMapper
+   * and ParaView's "colour by" menu): MAGNITUDE (default) or the COMPONENT
+   * VectorComponent. One-component arrays are rendered as they are.
+   */
+  enum VectorModes
+  {
+    MAGNITUDE = 0,
+    COMPONENT = 1
+  };
+
+  ///@{
+  /** Magnitude or one component of multi-component scalars (default MAGNITUDE). */
+  vtkSetClampMacro(VectorMode, int, MAGNITUDE, COMPONENT);
+  vtkGetMacro(VectorMode, int);
+  void SetVectorModeToMagnitude() { this->SetVectorMode(MAGNITUDE); }
+  void SetVectorModeToComponent() { this->SetVectorMode(COMPONENT); }
+  ///@}
+
+  ///@{
+  /** The component rendered in COMPONENT mode (default 0). */
+  vtkSetClampMacro(VectorComponent, int, 0, VTK_INT_MAX);
+  vtkGetMacro(VectorComponent, int);
+  ///@}
+
+  /**
    * Number of hexahedra the last frame rendered natively (0 when the mesh was
    * split into tetrahedra).
    */
@@ -247,6 +276,8 @@ protected:
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
   int HexahedronMode = HEXAHEDRON_ACCURATE;
   vtkTypeBool EmbedIsoSurfaces = 0;
+  int VectorMode = MAGNITUDE;
+  int VectorComponent = 0;
   int MaximumNumberOfPeels = 64;
   int MaximumNumberOfSteps = 0;
   int PsiTableSize = 512;

@@ -19,10 +19,14 @@
 #include "vtkObjectFactory.h"
 #include "vtkPVLODVolume.h"
 #include "vtkPVRenderView.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkScalarsToColors.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 #include "vtkVolumeProperty.h"
 
 #include <cstring>
+
+#include <algorithm>
 
 namespace
 {
@@ -247,6 +251,20 @@ int vtkPPIRayVolumeRepresentation::ProcessViewRequest(
   }
   if (request == vtkPVView::REQUEST_RENDER())
   {
+    // A multi-component array is rendered as the colour map shows it:
+    // ParaView's "colour by" menu sets the lookup table's vector mode.
+    if (vtkColorTransferFunction* lut = this->Property->GetRGBTransferFunction(0))
+    {
+      if (lut->GetVectorMode() == vtkScalarsToColors::COMPONENT)
+      {
+        this->Mapper->SetVectorModeToComponent();
+        this->Mapper->SetVectorComponent(std::max(0, lut->GetVectorComponent()));
+      }
+      else
+      {
+        this->Mapper->SetVectorModeToMagnitude();
+      }
+    }
     // In parallel a rank may hold no cells after redistribution: an empty
     // piece is normal there, not the user error the mapper reports.
     vtkAlgorithmOutput* port = vtkPVRenderView::GetPieceProducer(inInfo, this);

@@ -48,8 +48,16 @@ def main(plugin, baselines, temporary):
         pt.fail("'%s' is not offered for unstructured grids" % pt.REPRESENTATION)
     pt.set_camera(view, (30.0, 20.0, 40.0))
 
-    # 1. First render.
+    # 1. First render; its pixels against the reference renderer given
+    # ParaView's lookup table (Diverging colour space, as ParaView makes it).
     check_image(view, "TestPPIRayRepresentation")
+    covered, p99, largest = pt.against_reference(
+        view, display, os.path.join(temporary, "TestPPIRayRepresentation.png"), "RTData")
+    print("against the reference with ParaView's lookup table: %d pixels, p99 %.2f, max %.2f /255"
+          % (covered, p99, largest), flush=True)
+    if covered < 10000 or p99 > 1.0 or largest > 2.0:
+        failures.append("PPIRay Volume differs from VTK's evaluation of ParaView's lookup table: "
+                        "%d pixels, p99 %.2f, max %.2f /255" % (covered, p99, largest))
     mapper = pt.mapper_of(display)
     if mapper.GetNumberOfTetrahedra() != 5 * 20 ** 3:
         failures.append("expected 40000 tetrahedra, got %d" % mapper.GetNumberOfTetrahedra())

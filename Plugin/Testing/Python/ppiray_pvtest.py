@@ -113,18 +113,54 @@ def screenshot(view, path):
 
 
 def compare_with_baseline(image, baseline, temporary):
-    """VTK's regression comparison (vtkTesting, threshold 10 as in VTK's own
-    Python tests); on failure the test and difference images are left in
-    `temporary`."""
-    from vtkmodules.vtkTestingRendering import vtkTesting
-
-    testing = vtkTesting()
-    for arg in ("-V", baseline, "-T", temporary):
-        testing.AddArgument(arg)
-    if testing.RegressionTest(image, 10.0) != vtkTesting.PASSED:
-        return "%s differs from %s" % (image, baseline)
-    return None
+    """Testing/Python/ppiray_baseline.py's comparison (fails on a 10/255
+    change); on failure the test and difference images are left beside
+    `image` in `temporary`."""
+    import sys
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                    "..", "..", "..", "Testing", "Python"))
+    import ppiray_baseline
+    return ppiray_baseline.compare(image, baseline)
 
 
 def rank():
     return servermanager.vtkProcessModule.GetProcessModule().GetPartitionId()
+
+
+def against_reference(view, display, image_path, array, background=(0.32, 0.34, 0.43)):
+    """The screenshot at `image_path` against the CPU reference renderer given
+    ParaView's own lookup table and opacity function objects (evaluated by
+    VTK, vtkColorTransferFunction::GetTable), composited over the view's
+    background as the window does: C + (1 - alpha) background, 8 bits.
+    Returns (covered pixels, p99, max) in 1/255 units over the covered pixels."""
+    import numpy as np
+    import ppiray
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkRenderingCore import vtkVolumeProperty
+    import sys
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                    "..", "..", "..", "Testing", "Python"))
+    import ppiray_baseline
+
+    mapper = mapper_of(display)
+    prop = vtkVolumeProperty()
+    prop.SetColor(display.LookupTable.GetClientSideObject())
+    prop.SetScalarOpacity(display.ScalarOpacityFunction.GetClientSideObject())
+    prop.SetScalarOpacityUnitDistance(display.ScalarOpacityUnitDistance)
+    width, height = view.ViewSize
+    reference = ppiray.vtkUnstructuredGridReferenceRenderer()
+    reference.SetInputData(mapper.GetInput())
+    reference.SetInputArrayToProcess(0, 0, 0, 0, array)
+    reference.SetVolumeProperty(prop)
+    reference.SetCamera(view.GetClientSideObject().GetActiveCamera())
+    reference.SetImageSize(width, height)
+    reference.Update()
+    rgba = vtk_to_numpy(reference.GetOutput().GetPointData().GetScalars()).reshape(height, width, 4)
+    bg = np.round(255.0 * np.array(background))
+    expected = 255.0 * np.clip(rgba[:, :, :3], 0, 1) + (1.0 - rgba[:, :, 3:4]) * bg
+    shown = ppiray_baseline.read_rgb(image_path).astype(np.float64)
+    covered = rgba[:, :, 3] > 0.5 / 255
+    d = np.abs(shown - expected)[covered]
+    if d.size == 0:
+        return 0, 0.0, 0.0
+    return int(covered.sum()), float(np.percentile(d, 99)), float(d.max())

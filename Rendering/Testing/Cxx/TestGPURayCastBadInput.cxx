@@ -4,7 +4,9 @@
 // changes), unsupported cells only (error naming the type and count), a mix
 // of tetrahedra and a 2D cell (error; the tetrahedra still render), quadratic
 // cells (warning; rendered through their corners) and a zero-volume
-// tetrahedron (warning; skipped).
+// tetrahedron (warning; skipped), infinite scalars or coordinates (error,
+// nothing drawn), a 3-component array (magnitude by default; a component
+// out of range: warning, the last one).
 
 #include "PPIRayImageCompare.h"
 #include "PPIRayTestScenes.h"
@@ -13,6 +15,7 @@
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <limits>
 
@@ -25,7 +28,8 @@ struct Outcome
   std::vector<unsigned char> Image;
 };
 
-Outcome RenderGrid(vtkUnstructuredGrid* grid)
+Outcome RenderGrid(vtkUnstructuredGrid* grid,
+  const std::function<void(vtkUnstructuredGridGPURayCastMapper*)>& configure = nullptr)
 {
   ppiray_test::Scene scene(100, 100);
   ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
@@ -34,6 +38,10 @@ Outcome RenderGrid(vtkUnstructuredGrid* grid)
   mapper->AddObserver(vtkCommand::ErrorEvent, observer);
   mapper->AddObserver(vtkCommand::WarningEvent, observer);
   mapper->SetInputData(grid);
+  if (configure)
+  {
+    configure(mapper);
+  }
   scene.Volume->SetMapper(mapper);
   vtkCamera* camera = scene.Renderer->GetActiveCamera();
   camera->SetPosition(0.5, 0.5, 3.0);
@@ -168,5 +176,48 @@ int TestGPURayCastBadInput(int, char*[])
   errors += Expect(f.Warnings.find("zero-volume") != std::string::npos &&
       ppiray_test::Compare(reference.Image, f.Image).Max <= 1,
     "zero-volume tetrahedron: warning, image unchanged");
+
+  // Infinite scalars and coordinates: error, nothing drawn.
+  vtkNew<vtkUnstructuredGrid> infinite;
+  infinite->DeepCopy(good);
+  infinite->GetPointData()->GetScalars()->SetTuple1(3, std::numeric_limits<double>::infinity());
+  const Outcome is = RenderGrid(infinite);
+  std::cout << "infinite scalar: " << is.Errors << "\n";
+  errors += Expect(is.Errors.find("infinite values") != std::string::npos && Lit(is.Image) == 0,
+    "infinite scalar: error, nothing drawn");
+  vtkNew<vtkUnstructuredGrid> far;
+  far->DeepCopy(good);
+  far->GetPoints()->SetPoint(5, 0.0, -std::numeric_limits<double>::infinity(), 0.0);
+  const Outcome ic = RenderGrid(far);
+  std::cout << "infinite coordinate: " << ic.Errors << "\n";
+  errors += Expect(ic.Errors.find("infinite or NaN point coordinates") != std::string::npos &&
+      Lit(ic.Image) == 0,
+    "infinite coordinate: error, nothing drawn");
+
+  // A 3-component array (s, 0, 0): magnitude |s| = s renders as the scalar;
+  // component 7 of 3: warning, component 2 (zero everywhere: dark).
+  vtkNew<vtkUnstructuredGrid> vectors;
+  vectors->DeepCopy(good);
+  vtkNew<vtkDoubleArray> v;
+  v->SetName("v");
+  v->SetNumberOfComponents(3);
+  vtkDataArray* scalar = good->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < scalar->GetNumberOfTuples(); ++i)
+  {
+    v->InsertNextTuple3(scalar->GetTuple1(i), 0.0, 0.0);
+  }
+  vectors->GetPointData()->SetScalars(v);
+  const Outcome vm = RenderGrid(vectors);
+  errors += Expect(vm.Errors.empty() && vm.Warnings.empty() &&
+      ppiray_test::Compare(reference.Image, vm.Image).Max == 0,
+    "3-component array by magnitude renders as its scalar");
+  const Outcome vc = RenderGrid(vectors, [](vtkUnstructuredGridGPURayCastMapper* mapper) {
+    mapper->SetVectorModeToComponent();
+    mapper->SetVectorComponent(7);
+  });
+  std::cout << "component 7 of 3: " << vc.Warnings << "\n";
+  errors += Expect(vc.Warnings.find("using 2") != std::string::npos &&
+      ppiray_test::Compare(reference.Image, vc.Image).Max > 10,
+    "component out of range: warning, the last component rendered");
   return errors == 0 ? 0 : 1;
 }

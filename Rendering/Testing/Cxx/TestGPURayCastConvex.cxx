@@ -2,7 +2,7 @@
 // field and transfer function, perspective camera: baseline image; one peel.
 
 #include "PPIRayTestScenes.h"
-#include "vtkRegressionTestImage.h"
+#include "PPIRayBaseline.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include <iostream>
@@ -25,6 +25,6 @@ int TestGPURayCastConvex(int argc, char* argv[])
     std::cerr << "convex mesh took " << mapper->GetNumberOfPeels() << " peels, expected 1\n";
     ++errors;
   }
-  const int result = vtkRegressionTestImage(scene.Window);
-  return (errors == 0 && result != vtkRegressionTester::FAILED) ? 0 : 1;
+  const int result = ppiray_test::BaselineTest(argc, argv, scene.Window);
+  return (errors == 0 && result == 0) ? 0 : 1;
 }

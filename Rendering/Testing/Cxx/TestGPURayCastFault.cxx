@@ -25,7 +25,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "vtkRegressionTestImage.h"
+#include "PPIRayBaseline.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include <cmath>
@@ -144,6 +144,6 @@ int TestGPURayCastFault(int argc, char* argv[])
 
   mapper->SetHexahedronModeToAccurate();
   scene.Window->Render();
-  const int result = vtkRegressionTestImage(scene.Window);
-  return (errors == 0 && result != vtkRegressionTester::FAILED) ? 0 : 1;
+  const int result = ppiray_test::BaselineTest(argc, argv, scene.Window);
+  return (errors == 0 && result == 0) ? 0 : 1;
 }

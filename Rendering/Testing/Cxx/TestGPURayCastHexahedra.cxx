@@ -37,7 +37,7 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkRegressionTestImage.h"
+#include "PPIRayBaseline.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 #include "vtkUnstructuredGridReferenceRenderer.h"
@@ -262,8 +262,8 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     {
       errors += Fail("distorted block too far from the reference");
     }
-    const int result = vtkRegressionTestImage(scene.Window);
-    errors += result == vtkRegressionTester::FAILED ? 1 : 0;
+    const int result = ppiray_test::BaselineTest(argc, argv, scene.Window);
+    errors += result;
   }
 
   // 3. Collapsed hexahedra.

@@ -36,7 +36,7 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkRegressionTestImage.h"
+#include "PPIRayBaseline.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 #include "vtkTransformFilter.h"
@@ -407,6 +407,6 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
     renderers.push_back(renderer);
   }
   scene.Window->Render();
-  const int result = vtkRegressionTestImage(scene.Window);
-  return (errors == 0 && result != vtkRegressionTester::FAILED) ? 0 : 1;
+  const int result = ppiray_test::BaselineTest(argc, argv, scene.Window);
+  return (errors == 0 && result == 0) ? 0 : 1;
 }

@@ -66,6 +66,7 @@
 //
 // Skipped (125) when a dataset folder is missing; the others still run.
 
+#include "PPIRayBaseline.h"
 #include "PPIRayImageCompare.h"
 #include "PPIRayReferenceImage.h"
 #include "PPIRayTestScenes.h"
@@ -82,7 +83,6 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 #include "vtkUnstructuredGridReferenceRenderer.h"
@@ -718,27 +718,12 @@ void TransferFunction(vtkVolumeProperty* property, const std::vector<std::array<
   property->SetInterpolationTypeToLinear();
 }
 
-// vtkRegressionTestImage(window) against the scene's own baseline: the -V
-// argument <dir>/TestGPURayCastRealHexahedra.png becomes
+// The window against the scene's own baseline: the -V argument
+// <dir>/TestGPURayCastRealHexahedra.png becomes
 // <dir>/TestGPURayCastRealHexahedra<scene>.png (one test, four images).
 int RegressionTest(int argc, char* argv[], vtkRenderWindow* window, const std::string& scene)
 {
-  std::vector<std::string> args(argv, argv + argc);
-  for (size_t i = 1; i + 1 < args.size(); ++i)
-  {
-    if (args[i] == "-V" && args[i + 1].size() > 4)
-    {
-      args[i + 1].insert(args[i + 1].size() - 4, scene);
-    }
-  }
-  std::vector<char*> pointers;
-  for (auto& a : args)
-  {
-    pointers.push_back(&a[0]);
-  }
-  const int result =
-    vtkTesting::Test(static_cast<int>(pointers.size()), pointers.data(), window, 0.15);
-  return result == vtkTesting::FAILED ? 1 : 0;
+  return ppiray_test::BaselineTest(argc, argv, window, scene);
 }
 
 // The reference renderer's image (RGBA in [0, 1]) of `grid` with `property`

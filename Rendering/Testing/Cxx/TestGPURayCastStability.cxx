@@ -63,7 +63,7 @@ double RenderAndCheck(vtkUnstructuredGrid* grid, const View& view, const double 
     *imageOut = image;
   }
   const auto check =
-    ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property, image, size, size, 1);
+    ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property, image, size, size);
   return check.MaxDifference;
 }
 
