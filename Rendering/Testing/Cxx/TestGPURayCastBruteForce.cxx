@@ -3,8 +3,9 @@
 // point location per sample, VTK's own transfer-function evaluation), on
 // small scenes that stress what the two could get wrong together: a thin
 // opacity spike, a non-convex mesh in two parts, cell scalars, ParaView's
-// default Cool to Warm (Diverging) and a Lab map, inverted cells, scalars
-// near 1e6, a vector array rendered by magnitude. Bounds per scene (every
+// default Cool to Warm (Diverging) and a Lab map, inverted cells, zero-volume
+// cells on interior faces, scalars near 1e6, a vector array rendered by
+// magnitude. Bounds per scene (every
 // covered pixel, 1/255 units): p99 <= 1 for both (8-bit rounding is 0.5);
 // max <= 3 against the march (its steps cut the mesh boundary and the
 // cell-scalar jumps at +-Step/2: up to tau Step of a pixel's colour, about
@@ -273,6 +274,37 @@ int TestGPURayCastBruteForce(int, char*[])
     }
     grid->SetCells(VTK_TETRA, cells);
     scenes.push_back({ "inverted cells", grid, "s", false,
+      [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); } });
+  }
+  {
+    // Zero-volume tetrahedra on interior faces: a face's three corners and
+    // its centroid (a new point with the interpolated scalar).
+    auto grid = Block(6, All);
+    vtkDataArray* s = grid->GetPointData()->GetArray("s");
+    const vtkIdType cells = grid->GetNumberOfCells();
+    for (vtkIdType c = 0; c < cells; c += 7)
+    {
+      vtkIdType npts;
+      const vtkIdType* pts;
+      grid->GetCellPoints(c, npts, pts);
+      const vtkIdType face[3] = { pts[0], pts[1], pts[2] };
+      double centroid[3] = { 0, 0, 0 }, value = 0;
+      for (vtkIdType id : face)
+      {
+        double p[3];
+        grid->GetPoint(id, p);
+        for (int i = 0; i < 3; ++i)
+        {
+          centroid[i] += p[i] / 3;
+        }
+        value += s->GetComponent(id, 0) / 3;
+      }
+      const vtkIdType m = grid->GetPoints()->InsertNextPoint(centroid);
+      s->InsertNextTuple1(value);
+      const vtkIdType flat[4] = { face[0], face[1], face[2], m };
+      grid->InsertNextCell(VTK_TETRA, 4, flat);
+    }
+    scenes.push_back({ "zero-volume cells", grid, "s", false,
       [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); } });
   }
   scenes.push_back({ "scalars near 1e6", Block(6, All, 1.0, 1e6), "s", false,

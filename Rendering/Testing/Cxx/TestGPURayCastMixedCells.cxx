@@ -253,7 +253,7 @@ int TestGPURayCastMixedCells(int argc, char* argv[])
     ppiray_test::CheckPixels(scene.Renderer, tets, scene.Property, image, 300, 300);
   std::cout << "pixels checked " << check.Pixels << ", max difference " << check.MaxDifference
             << "/255 against the reference on the same tetrahedra\n";
-  if (check.MaxDifference > 2.0)
+  if (check.MaxDifference > 1.0) // 8-bit rounding 0.5, float and the 0.1/255 transfer-function tolerance
   {
     errors += Fail("pixels differ from the reference renderer");
   }
