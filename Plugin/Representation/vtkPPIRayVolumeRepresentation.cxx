@@ -8,6 +8,7 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkImageData.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkStructuredGrid.h"
 #include "vtkUnstructuredGrid.h"
@@ -33,8 +34,12 @@ namespace
 // The name the mapper is registered under with AddVolumeMapper().
 constexpr const char* PPIRayMapperName = "PPIRay";
 
-// Whether every cell of `data` is a hexahedron or a voxel.
-bool IsHexahedral(vtkDataSet* data)
+// Whether every cell of `data` is a hexahedron or a voxel (`mixed` false), or
+// one of the linear 3D cells the mapper renders itself: tetrahedra,
+// hexahedra, voxels, wedges and pyramids, split conformingly by the mapper
+// where it does not render them natively (`mixed` true). Tetrahedra alone
+// keep ParaView's usual path.
+bool RenderedUnsplit(vtkDataSet* data, bool mixed)
 {
   if (vtkStructuredGrid::SafeDownCast(data) || vtkImageData::SafeDownCast(data) ||
     vtkRectilinearGrid::SafeDownCast(data))
@@ -46,15 +51,34 @@ bool IsHexahedral(vtkDataSet* data)
   {
     return false;
   }
+  bool tetrahedraOnly = true;
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
   {
     const int type = grid->GetCellType(c);
-    if (type != VTK_HEXAHEDRON && type != VTK_VOXEL)
+    tetrahedraOnly = tetrahedraOnly && type == VTK_TETRA;
+    const bool hexahedral = type == VTK_HEXAHEDRON || type == VTK_VOXEL;
+    const bool linear3D = type == VTK_TETRA || type == VTK_WEDGE || type == VTK_PYRAMID;
+    if (!hexahedral && !(mixed && linear3D))
     {
       return false;
     }
   }
-  return true;
+  return !tetrahedraOnly; // tetrahedra take ParaView's usual path
+}
+
+// `output` made to hold the cells of `data` as they are (structured cells as
+// hexahedra or voxels).
+void CopyCells(vtkDataSet* data, vtkUnstructuredGrid* output)
+{
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
+  {
+    output->ShallowCopy(grid);
+    return;
+  }
+  vtkNew<vtkAppendFilter> append;
+  append->AddInputData(data);
+  append->Update();
+  output->ShallowCopy(append->GetOutput());
 }
 
 // The one non-empty dataset of `input` (itself, or the only non-empty leaf
@@ -192,43 +216,50 @@ void vtkPPIRayVolumeRepresentation::SetHexahedronMode(int mode)
 int vtkPPIRayVolumeRepresentation::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  // In one process the cells reach the mapper as they are: hexahedra when the
+  // mapper renders them natively, and meshes of tetrahedra, hexahedra, wedges
+  // and pyramids in any mode (the mapper's conforming split, with shared
+  // diagonals, instead of vtkDataSetTriangleFilter's, which leaves
+  // zero-volume and non-manifold tetrahedra on real FE meshes and can take
+  // minutes on their non-planar faces).
+  this->PassesCellsUnsplit = false;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool serial = !(controller && controller->GetNumberOfProcesses() > 1) &&
+    inputVector[0]->GetNumberOfInformationObjects() == 1;
+  vtkDataObject* input = serial ? vtkDataObject::GetData(inputVector[0], 0) : nullptr;
+  vtkDataSet* data = input ? SingleDataSet(input) : nullptr;
+  const bool subdivide =
+    this->Mapper->GetHexahedronMode() == vtkUnstructuredGridGPURayCastMapper::HEXAHEDRON_SUBDIVIDE;
+  const bool unsplit =
+    data && RenderedUnsplit(data, true) && !(subdivide && RenderedUnsplit(data, false));
+
+  // The view delivers the preprocessor's output (vtkPVRenderView::SetPiece in
+  // the superclass): it is made to hold the cells. A single dataset skips the
+  // preprocessor altogether (nothing to extract, nothing to split).
+  if (unsplit && vtkDataSet::SafeDownCast(input) && !this->UseSeparateOpacityArray)
+  {
+    if (auto* output = vtkUnstructuredGrid::SafeDownCast(this->Preprocessor->GetOutputDataObject(0)))
+    {
+      CopyCells(data, output);
+      vtkMath::UninitializeBounds(this->DataBounds);
+      output->GetBounds(this->DataBounds);
+      this->PassesCellsUnsplit = true;
+      return this->vtkVolumeRepresentation::RequestData(request, inputVector, outputVector);
+    }
+  }
   if (!this->Superclass::RequestData(request, inputVector, outputVector))
   {
     return 0;
   }
-  // Hexahedra pass through when the mapper renders them natively, in one
-  // process, and the preprocessor kept the data (block selection).
-  this->PassesHexahedra = false;
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  // A composite dataset: the preprocessor ran (block selection); its output,
+  // if it kept the block, is replaced by the cells as they are.
   auto* preprocessed =
     vtkUnstructuredGrid::SafeDownCast(this->Preprocessor->GetOutputDataObject(0));
-  if (this->Mapper->GetHexahedronMode() == vtkUnstructuredGridGPURayCastMapper::HEXAHEDRON_SUBDIVIDE ||
-    (controller && controller->GetNumberOfProcesses() > 1) ||
-    inputVector[0]->GetNumberOfInformationObjects() != 1 || !preprocessed ||
-    preprocessed->GetNumberOfCells() == 0)
+  if (unsplit && preprocessed && preprocessed->GetNumberOfCells() > 0)
   {
-    return 1;
+    CopyCells(data, preprocessed);
+    this->PassesCellsUnsplit = true;
   }
-  vtkDataSet* data = SingleDataSet(vtkDataObject::GetData(inputVector[0], 0));
-  if (!data || !IsHexahedral(data))
-  {
-    return 1;
-  }
-  // The view delivers the preprocessor's output (the superclass hands it to
-  // vtkPVRenderView::SetPiece, which takes one piece per update): it now
-  // holds the hexahedra. The preprocessor re-executes on every update.
-  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
-  {
-    preprocessed->ShallowCopy(grid);
-  }
-  else
-  {
-    vtkNew<vtkAppendFilter> append; // structured cells become hexahedra or voxels
-    append->AddInputData(data);
-    append->Update();
-    preprocessed->ShallowCopy(append->GetOutput());
-  }
-  this->PassesHexahedra = true;
   return 1;
 }
 
@@ -282,7 +313,7 @@ int vtkPPIRayVolumeRepresentation::ProcessViewRequest(
 void vtkPPIRayVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "PassesHexahedra: " << this->PassesHexahedra << "\n";
+  os << indent << "PassesCellsUnsplit: " << this->PassesCellsUnsplit << "\n";
   os << indent << "Mapper:\n";
   this->Mapper->PrintSelf(os, indent.GetNextIndent());
 }

@@ -74,8 +74,8 @@ public:
   int ProcessViewRequest(vtkInformationRequestKey* request, vtkInformation* inInfo,
     vtkInformation* outInfo) override;
 
-  /** Whether the last update passed hexahedra through untouched. */
-  bool GetPassesHexahedra() const { return this->PassesHexahedra; }
+  /** Whether the last update passed the cells to the mapper unsplit. */
+  bool GetPassesCellsUnsplit() const { return this->PassesCellsUnsplit; }
 
 protected:
   vtkPPIRayVolumeRepresentation();
@@ -91,7 +91,7 @@ private:
   void operator=(const vtkPPIRayVolumeRepresentation&) = delete;
 
   vtkUnstructuredGridGPURayCastMapper* Mapper;
-  bool PassesHexahedra = false;
+  bool PassesCellsUnsplit = false;
 };
 
 #endif
