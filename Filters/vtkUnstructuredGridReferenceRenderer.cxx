@@ -478,6 +478,10 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
   {
     values[v] = cellId >= 0 ? scalars->GetComponent(cellId, 0)
                             : scalars->GetComponent(cell->GetPointId(v), 0);
+    if (std::isnan(values[v]))
+    {
+      return; // a cell with a NaN scalar is empty, as in the mapper
+    }
   }
   std::vector<double> ts = { 0.0 };
   std::vector<Vec3> corners;
@@ -523,7 +527,7 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
     evaluate(0.5 * (m + b), sq3);
     const double deviation = std::max({ std::abs(sm - 0.5 * (sa + sb)),
       std::abs(sq1 - 0.75 * sa - 0.25 * sb), std::abs(sq3 - 0.25 * sa - 0.75 * sb) });
-    if (depth >= 24 || deviation <= tolerance)
+    if (depth >= 24 || !(deviation > tolerance))
     {
       out.push_back({ a, m, sa, sm, { 0, 0, 0 }, id });
       out.push_back({ m, b, sm, sb, { 0, 0, 0 }, id });

@@ -238,7 +238,8 @@ int vtkPPIRayVolumeRepresentation::RequestData(
   // preprocessor altogether (nothing to extract, nothing to split).
   if (unsplit && vtkDataSet::SafeDownCast(input) && !this->UseSeparateOpacityArray)
   {
-    if (auto* output = vtkUnstructuredGrid::SafeDownCast(this->Preprocessor->GetOutputDataObject(0)))
+    auto* output = vtkUnstructuredGrid::SafeDownCast(this->Preprocessor->GetOutputDataObject(0));
+    if (output)
     {
       CopyCells(data, output);
       vtkMath::UninitializeBounds(this->DataBounds);
