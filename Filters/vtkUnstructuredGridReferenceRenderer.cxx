@@ -1013,6 +1013,30 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
       }
     }
   };
+  // Pixel box of each general cell, its corners' projections widened by a
+  // pixel: a linear 3D cell lies in the convex hull of its corners (bilinear
+  // faces included), so a ray outside the box misses the cell. Everything
+  // when a corner is behind the eye.
+  std::vector<std::array<double, 4>> generalBox(generalCells.size());
+  for (size_t g = 0; g < generalCells.size(); ++g)
+  {
+    auto& box = generalBox[g];
+    box = { 1e300, -1e300, 1e300, -1e300 };
+    for (vtkIdType k = generalOffsets[g]; k < generalOffsets[g + 1]; ++k)
+    {
+      const vtkIdType p = generalPoints[k];
+      if (behind[p])
+      {
+        box = { -1e300, 1e300, -1e300, 1e300 };
+        break;
+      }
+      for (int i = 0; i < 2; ++i)
+      {
+        box[2 * i] = std::min(box[2 * i], pixel[2 * p + i] - 1.0);
+        box[2 * i + 1] = std::max(box[2 * i + 1], pixel[2 * p + i] + 1.0);
+      }
+    }
+  }
   std::vector<vtkIdType> tileOffsets(static_cast<size_t>(tilesX) * tilesY + 1, 0);
   for (vtkIdType t = 0; t < numberOfItems; ++t)
   {
@@ -1054,7 +1078,7 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
   {
     const int tx = tile % tilesX, ty = tile / tilesX;
     std::vector<Tetrahedron> local;
-    std::vector<vtkIdType> localGeneral;
+    std::vector<size_t> localGeneral; // indices into generalCells
     vtkNew<vtkGenericCell> cell;
     vtkNew<vtkGenericCell> gradientCell;
     std::vector<double> values, weights, derivatives;
@@ -1088,7 +1112,7 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
       const vtkIdType t = tileTets[k];
       if (t >= numberOfTets)
       {
-        localGeneral.push_back(generalCells[t - numberOfTets]);
+        localGeneral.push_back(static_cast<size_t>(t - numberOfTets));
         continue;
       }
       double p[4][3];
@@ -1143,8 +1167,14 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
             segments.push_back(seg);
           }
         }
-        for (vtkIdType c : localGeneral)
+        for (size_t g : localGeneral)
         {
+          const auto& box = generalBox[g];
+          if (px < box[0] || px > box[1] || py < box[2] || py > box[3]) // pixel centres at integers
+          {
+            continue;
+          }
+          const vtkIdType c = generalCells[g];
           input->GetCell(c, cell);
           GeneralCellSegments(c, cell, scalars, cellScalars ? c : -1, origin, direction, centre,
             linearTolerance, segments);
