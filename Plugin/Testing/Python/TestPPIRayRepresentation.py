@@ -12,7 +12,10 @@ Wavelet -> Tetrahedralize (40,000 tetrahedra) shown as PPIRay Volume:
  5. an opaque slice and outline in the same view: matches the third baseline;
  6. PPIRay Blend Mode "Isosurfaces" with two Isosurface Values, shaded:
     matches the fourth baseline; the mapper is in ISOSURFACE_BLEND and no cell
-    data was re-uploaded.
+    data was re-uploaded;
+ 7. a vector array (RTData, 0, 0) coloured by Magnitude and by component X
+    renders as RTData, by component Y does not; the lookup table's vector
+    mode reaches the mapper.
 
 Usage: pvbatch TestPPIRayRepresentation.py PLUGIN BASELINE_DIR TEMPORARY_DIR
 """
@@ -22,7 +25,17 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import ppiray_pvtest as pt  # noqa: E402
 
-from paraview.simple import Hide, Outline, Render, Show, Slice, Tetrahedralize, Wavelet  # noqa: E402
+from paraview.simple import (  # noqa: E402
+    Calculator,
+    GetColorTransferFunction,
+    Hide,
+    Outline,
+    Render,
+    Show,
+    Slice,
+    Tetrahedralize,
+    Wavelet,
+)
 
 
 def counts(mapper):
@@ -105,7 +118,8 @@ def main(plugin, baselines, temporary):
     slice_display.SetRepresentationType("Surface")
     slice_display.ColorArrayName = ["POINTS", ""]
     slice_display.DiffuseColor = [0.85, 0.85, 0.85]
-    outline_display = Show(Outline(Input=wavelet), view)
+    outline = Outline(Input=wavelet)
+    outline_display = Show(outline, view)
     outline_display.DiffuseColor = [1.0, 1.0, 1.0]
     check_image(view, "TestPPIRayRepresentationOpaque")
     Hide(slice_, view)
@@ -121,6 +135,36 @@ def main(plugin, baselines, temporary):
                         % (mapper.GetBlendMode(), mapper.GetEmbedIsoSurfaces()))
     if counts(mapper)[:2] != before[:2]:
         failures.append("isosurfaces re-uploaded cell data: %s -> %s" % (before, counts(mapper)))
+
+    # 7. A vector array V = (RTData, 0, 0): by magnitude (ParaView's default)
+    # and as component X it renders as RTData; as component Y (zero) it does
+    # not. The lookup table's vector mode reaches the mapper.
+    Hide(tets, view)
+    Hide(outline, view)
+    vectors = Calculator(Input=tets, ResultArrayName="V", Function="RTData*iHat")
+    vdisplay = pt.show_volume(vectors, view, "V")
+    lut = GetColorTransferFunction("V")
+    images = {}
+    for mode, component in (("Magnitude", 0), ("Component", 0), ("Component", 1)):
+        lut.VectorMode = mode
+        lut.VectorComponent = component
+        name = "TestPPIRayRepresentationVector%s%d" % (mode, component)
+        images[(mode, component)] = pt.read_rgb(
+            pt.screenshot(view, os.path.join(temporary, name + ".png")))
+        vmapper = pt.mapper_of(vdisplay)
+        expected = (0 if mode == "Magnitude" else 1, component)
+        if (vmapper.GetVectorMode(), vmapper.GetVectorComponent()) != expected:
+            failures.append("%s %d reached the mapper as vector mode %d, component %d"
+                            % (mode, component, vmapper.GetVectorMode(),
+                               vmapper.GetVectorComponent()))
+    # the first image: RTData with the same colour map and opacity
+    scalar = pt.read_rgb(os.path.join(temporary, "TestPPIRayRepresentation.png"))
+    for key, bound, same in ((("Magnitude", 0), 1, True), (("Component", 0), 1, True),
+                             (("Component", 1), 10, False)):
+        d = int(abs(images[key].astype(int) - scalar.astype(int)).max())
+        print("vector %s %d against the scalar: max %d /255" % (key[0], key[1], d), flush=True)
+        if (d <= bound) != same:
+            failures.append("vector %s %d against the scalar image: max %d/255" % (key + (d,)))
 
     pt.finish(failures)
 

@@ -127,6 +127,15 @@ def rank():
     return servermanager.vtkProcessModule.GetProcessModule().GetPartitionId()
 
 
+def read_rgb(path):
+    """(height, width, 3) uint8 of a PNG (Testing/Python/ppiray_baseline.py)."""
+    import sys
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                    "..", "..", "..", "Testing", "Python"))
+    import ppiray_baseline
+    return ppiray_baseline.read_rgb(path)
+
+
 def against_reference(view, display, image_path, array, background=(0.32, 0.34, 0.43)):
     """The screenshot at `image_path` against the CPU reference renderer given
     ParaView's own lookup table and opacity function objects (evaluated by
