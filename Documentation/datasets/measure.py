@@ -23,13 +23,12 @@ from vtkmodules.vtkIOImage import vtkImageReader, vtkSLCReader
 from vtkmodules.vtkIOLegacy import vtkDataSetReader
 from vtkmodules.vtkIOParallel import vtkMultiBlockPLOT3DReader
 from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLUnstructuredGridReader
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 
 import ppiray
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                                 "Testing", "Python"))
-from ppiray_scene import scene, volume_property  # noqa: E402
+from ppiray_scene import scene, window_rgb  # noqa: E402
 
 DATA = os.environ.get("PPIRAY_DATA_ROOT", os.path.join(os.path.dirname(__file__), "..", "..",
                                                          "..", "shared", "data"))
@@ -172,12 +171,7 @@ def measure(grid, size):
         start = time.perf_counter()
         window.Render()
         times.append(1000 * (time.perf_counter() - start))
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    gpu = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(np.float64)
+    gpu = window_rgb(window)
     reference = ppiray.vtkUnstructuredGridReferenceRenderer()
     reference.SetInputData(grid)
     reference.SetVolumeProperty(renderer.GetVolumes().GetLastProp().GetProperty())

@@ -86,6 +86,17 @@ def save(window, path):
     writer.Write()
 
 
+def window_rgb(window):
+    """RGB of the window's back buffer as a float array (pixels x 3, rows from
+    the bottom)."""
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGB()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3].astype(float)
+
+
 def read_png(path):
     """RGB of a PNG as a float array (pixels x 3)."""
     reader = vtkPNGReader()

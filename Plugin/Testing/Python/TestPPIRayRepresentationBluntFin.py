@@ -71,7 +71,4 @@ def main(plugin, baselines, temporary, data_root):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 5:
-        pt.fail("usage: " + __doc__.strip().splitlines()[-1])
-    if main(*sys.argv[1:]) == pt.SKIP:
-        raise SystemExit(pt.SKIP)
+    pt.run(main, __doc__, 5)

@@ -173,3 +173,13 @@ def against_reference(view, display, image_path, array, background=(0.32, 0.34, 
     if d.size == 0:
         return 0, 0.0, 0.0
     return int(covered.sum()), float(np.percentile(d, 99)), float(d.max())
+
+
+def run(main, doc, argc):
+    """Call main(*sys.argv[1:]) of a test script taking argc - 1 arguments
+    (the usage is the last line of `doc`); exit with SKIP when it skips."""
+    import sys
+    if len(sys.argv) != argc:
+        fail("usage: " + doc.strip().splitlines()[-1])
+    if main(*sys.argv[1:]) == SKIP:
+        raise SystemExit(SKIP)
