@@ -461,6 +461,26 @@ void FaceCrossings(const std::vector<Vec3>& p, const Vec3& o, const Vec3& d, std
   }
 }
 
+// The corners a linear 3D cell interpolates from: a cell may list more point
+// ids than its type has corners (a 20-node serendipity hexahedron written as
+// VTK_HEXAHEDRON); the type's own functions use the first ones.
+int InterpolatedPoints(vtkCell* cell)
+{
+  const int n = static_cast<int>(cell->GetNumberOfPoints());
+  switch (cell->GetCellType())
+  {
+    case VTK_HEXAHEDRON:
+    case VTK_VOXEL:
+      return std::min(n, 8);
+    case VTK_WEDGE:
+      return std::min(n, 6);
+    case VTK_PYRAMID:
+      return std::min(n, 5);
+    default:
+      return n;
+  }
+}
+
 // The pieces of the ray inside a hexahedron, voxel, wedge or pyramid, with the
 // cell's own (isoparametric) interpolation: the ray's crossings with every
 // face (FaceCrossings) cut it into intervals, an interval whose midpoint is
@@ -472,8 +492,8 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
   const Vec3& origin, const Vec3& direction, const Vec3& centre, double tolerance,
   std::vector<Segment>& out)
 {
-  const int n = static_cast<int>(cell->GetNumberOfPoints());
-  std::vector<double> weights(std::max(n, 8)), values(n);
+  const int n = InterpolatedPoints(cell);
+  std::vector<double> weights(std::max(static_cast<int>(cell->GetNumberOfPoints()), 8)), values(n);
   for (int v = 0; v < n; ++v)
   {
     values[v] = cellId >= 0 ? scalars->GetComponent(cellId, 0)
@@ -1090,7 +1110,7 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
         return { 0, 0, 0 };
       }
       input->GetCell(c, gradientCell);
-      const int n = static_cast<int>(gradientCell->GetNumberOfPoints());
+      const int n = InterpolatedPoints(gradientCell);
       values.resize(n);
       weights.resize(std::max(n, 8));
       for (int v = 0; v < n; ++v)

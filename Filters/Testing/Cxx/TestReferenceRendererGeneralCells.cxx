@@ -11,7 +11,9 @@
 // 4. a NaN point scalar: the cells touching it are empty and the rest renders
 //    as the grid without them (the linearization of a NaN field never
 //    converged and bisected every ray piece 24 levels deep: a real FE result
-//    with NaN in a normalized stress never finished).
+//    with NaN in a normalized stress never finished);
+// 5. hexahedra listing 20 point ids (a serendipity hexahedron written as
+//    VTK_HEXAHEDRON, mid-edge values NaN) render from their 8 corners.
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -267,6 +269,38 @@ int TestReferenceRendererGeneralCells(int, char*[])
   if (without->GetNumberOfCells() != 19 || !(nanDifference <= 1e-7))
   {
     std::printf("FAILED: cells touching a NaN scalar are not simply empty\n");
+    ++errors;
+  }
+
+  // 5. The same 27 hexahedra with 12 extra ids each, at new NaN points.
+  auto plain = Grid(3, VTK_HEXAHEDRON, shear, linear);
+  vtkNew<vtkUnstructuredGrid> twenty;
+  vtkNew<vtkPoints> points;
+  points->DeepCopy(plain->GetPoints());
+  vtkNew<vtkDoubleArray> twentyValues;
+  twentyValues->DeepCopy(plain->GetPointData()->GetScalars());
+  for (vtkIdType c = 0; c < plain->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    plain->GetCellPoints(c, npts, pts);
+    vtkIdType ids[20];
+    std::copy(pts, pts + 8, ids);
+    for (int k = 8; k < 20; ++k)
+    {
+      ids[k] = points->InsertNextPoint(0.5, 0.5, 0.5);
+      twentyValues->InsertNextValue(std::nan(""));
+    }
+    twenty->InsertNextCell(VTK_HEXAHEDRON, 20, ids);
+  }
+  twenty->SetPoints(points);
+  twenty->GetPointData()->SetScalars(twentyValues);
+  const double twentyDifference =
+    MaxDifference(Render(twenty, property, camera), Render(plain, property, camera));
+  std::printf("hexahedra with 20 ids: max difference %.2e\n", twentyDifference);
+  if (!(twentyDifference <= 1e-7))
+  {
+    std::printf("FAILED: a hexahedron with extra ids is not rendered from its corners\n");
     ++errors;
   }
   return errors == 0 ? 0 : 1;
