@@ -33,6 +33,12 @@ def failed(junit):
     return result
 
 
+def real_failures(failures):
+    """The names of failed tests whose output shows no display-connection
+    failure (these are never rerun)."""
+    return sorted(n for n, out in failures.items() if not DISPLAY_FAILURE.search(out))
+
+
 def main():
     build, args = sys.argv[1], sys.argv[2:]
     junit = os.path.join(os.path.abspath(build), "Testing", "ppiray-junit.xml")
@@ -40,7 +46,7 @@ def main():
         return 0
     failures = failed(junit)
     for attempt in range(1, RETRIES + 1):
-        real = sorted(n for n, out in failures.items() if not DISPLAY_FAILURE.search(out))
+        real = real_failures(failures)
         if real:
             print("[ppiray] failed: %s" % ", ".join(real), flush=True)
             return 1

@@ -31,33 +31,41 @@ struct TransferFunctions
   // GetTable call (the CIEDE2000 space builds its colour path per call).
   std::vector<Sample> Evaluate(double x0, double x1, int n) const
   {
-    std::vector<double> rgb(3 * n, 1.0);
+    std::vector<double> x(n), rgb(3 * n, 1.0);
+    for (int i = 0; i < n; ++i)
+    {
+      x[i] = i == n - 1 ? x1 : x0 + (x1 - x0) * i / (n - 1);
+    }
     if (this->Color && this->Dense.empty() && this->Color->GetScale() == VTK_CTF_LINEAR)
     {
       this->Color->GetTable(x0, x1, n, rgb.data());
     }
-    else if (this->Color && this->Dense.empty())
+    else if (this->Color)
     {
-      for (int i = 0; i < n; ++i) // a log scale spaces GetTable's samples evenly in log10
+      // A log scale spaces GetTable's samples evenly in log10: one by one.
+      for (int i = 0; i < n; ++i)
       {
-        const double x = i == n - 1 ? x1 : x0 + (x1 - x0) * i / (n - 1);
-        this->Color->GetTable(x, x, 1, rgb.data() + 3 * i);
+        if (this->Dense.empty())
+        {
+          this->Color->GetTable(x[i], x[i], 1, rgb.data() + 3 * i);
+        }
+        else
+        {
+          this->DenseColor(x[i], rgb.data() + 3 * i);
+        }
       }
     }
-    else if (this->Color)
+    else if (this->Gray)
     {
       for (int i = 0; i < n; ++i)
       {
-        this->DenseColor(i == n - 1 ? x1 : x0 + (x1 - x0) * i / (n - 1), rgb.data() + 3 * i);
+        rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = this->Gray->GetValue(x[i]);
       }
     }
     std::vector<Sample> samples(n);
     for (int i = 0; i < n; ++i)
     {
-      const double x = i == n - 1 ? x1 : x0 + (x1 - x0) * i / (n - 1);
-      const double gray = this->Gray ? this->Gray->GetValue(x) : 1.0;
-      samples[i] = { this->Color ? rgb[3 * i] : gray, this->Color ? rgb[3 * i + 1] : gray,
-        this->Color ? rgb[3 * i + 2] : gray, this->Opacity->GetValue(x) };
+      samples[i] = { rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2], this->Opacity->GetValue(x[i]) };
     }
     return samples;
   }

@@ -604,7 +604,7 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateField(vtkUnstructuredGridBase* i
     in.FieldVectorMode == vectorMode && in.FieldVectorComponent == component &&
     scalars->GetMTime() <= in.FieldTime.GetMTime())
   {
-    return in.FieldArray != nullptr;
+    return true;
   }
   if (component != this->VectorComponent && vectorMode == COMPONENT && components > 1)
   {
@@ -689,11 +689,20 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateField(vtkUnstructuredGridBase* i
 bool vtkUnstructuredGridGPURayCastMapper::UpdateTransferFunction(vtkVolumeProperty* property)
 {
   vtkInternals& in = *this->Internals;
-  if (in.Property == property &&
-    property->GetMTime() <= in.TransferFunctionCheckTime.GetMTime() &&
-    in.TexelShift == in.FieldShift)
+  const bool unchanged = in.Property == property &&
+    property->GetMTime() <= in.TransferFunctionCheckTime.GetMTime();
+  if (unchanged && in.TexelShift == in.FieldShift)
   {
     return in.ControlPoints->GetNumberOfControlPoints() > 0;
+  }
+  if (unchanged && in.ControlPoints->GetNumberOfControlPoints() > 0)
+  {
+    // Only the field's shift moved: the same control points, texels anew.
+    in.TexelShift = in.FieldShift;
+    in.TransferFunctionTexels = in.ControlPoints->GetTexels(in.FieldShift);
+    in.TransferFunctionTime.Modified();
+    in.TransferFunctionOnGPU = false;
+    return true;
   }
   in.Property = property;
   in.TransferFunctionCheckTime.Modified();
