@@ -1,5 +1,6 @@
 #include "vtkHexahedralCellTextures.h"
 
+#include "ppirayInvertedSheets.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellType.h"
@@ -50,6 +51,41 @@ double FrameQuality(const double* local, const vtkIdType c[8], int i)
 // corners, summed. All eight, not two opposite ones: a collapsed corner has no
 // frame, and a pyramid written as a hexahedron (4, 5, 6 on 0, 1, 2) has none
 // at 0 or 6.
+// Whether hexahedra a / 6 and b / 6 lie on one side of their shared face
+// (face a % 6 of the first): their centroids on the same side of the plane
+// through the face's centre with the normal (q2 - q0) x (q3 - q1) (the mesh
+// folds back on itself there).
+bool OnOneSide(const double* local, const vtkIdType* cornerIds, vtkIdType a, vtkIdType b)
+{
+  const vtkIdType* ca = cornerIds + 8 * (a / 6);
+  const vtkIdType* cb = cornerIds + 8 * (b / 6);
+  const vtkIdType* q = vtkHexahedron::GetFaceArray(static_cast<int>(a % 6));
+  double centre[3] = { 0, 0, 0 }, inA[3] = { 0, 0, 0 }, inB[3] = { 0, 0, 0 };
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int v = 0; v < 4; ++v)
+    {
+      centre[k] += 0.25 * local[3 * ca[q[v]] + k];
+    }
+    for (int v = 0; v < 8; ++v)
+    {
+      inA[k] += 0.125 * local[3 * ca[v] + k];
+      inB[k] += 0.125 * local[3 * cb[v] + k];
+    }
+  }
+  double d02[3], d13[3], n[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    d02[k] = local[3 * ca[q[2]] + k] - local[3 * ca[q[0]] + k];
+    d13[k] = local[3 * ca[q[3]] + k] - local[3 * ca[q[1]] + k];
+    inA[k] -= centre[k];
+    inB[k] -= centre[k];
+  }
+  vtkMath::Cross(d02, d13, n);
+  const double sideA = vtkMath::Dot(n, inA), sideB = vtkMath::Dot(n, inB);
+  return (sideA > 0 && sideB > 0) || (sideA < 0 && sideB < 0);
+}
+
 double Handedness(const double* local, const vtkIdType c[8])
 {
   double sum = 0, scale;
@@ -63,16 +99,13 @@ double Handedness(const double* local, const vtkIdType c[8])
 // Corner positions on the unit cube, bits (x, y, z), in VTK_HEXAHEDRON order.
 const int CornerBits[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
 
-// Renumbers the corners by the rotation of the cube that takes corner `i` to
-// corner 0 and its frame (CornerNeighbor(i, 0..2)) to the axes: the same cell, still
-// right-handed, with its frame at corner i.
-// Whether the hexahedron has no volume: the six tetrahedra (0, a, b, 6)
-// around its 0-6 diagonal add up to less than 1e-9 of its largest edge cubed.
-bool IsFlat(const double* local, const vtkIdType c[8])
+// Volume of the hexahedron as the six tetrahedra (0, a, b, 6) around its 0-6
+// diagonal (a, b consecutive on the ring of the other corners).
+double SignedVolume(const double* local, const vtkIdType c[8])
 {
   static const int ring[7] = { 1, 2, 3, 7, 4, 5, 1 };
   auto at = [&](int i) { return local + 3 * c[i]; };
-  double volume = 0, size = 0;
+  double volume = 0;
   for (int k = 0; k < 6; ++k)
   {
     double a[3], b[3], d[3];
@@ -86,17 +119,28 @@ bool IsFlat(const double* local, const vtkIdType c[8])
     vtkMath::Cross(a, b, n);
     volume += vtkMath::Dot(n, d) / 6.0;
   }
+  return volume;
+}
+
+// Whether the hexahedron has no volume: less than 1e-9 of its largest edge cubed.
+bool IsFlat(const double* local, const vtkIdType c[8])
+{
+  double size = 0;
   for (int i = 0; i < 8; ++i)
   {
     for (int j = 0; j < i; ++j)
     {
-      size = std::max(size, vtkMath::Distance2BetweenPoints(at(i), at(j)));
+      size = std::max(size,
+        vtkMath::Distance2BetweenPoints(local + 3 * c[i], local + 3 * c[j]));
     }
   }
   size = std::sqrt(size);
-  return !(std::abs(volume) > 1e-9 * size * size * size);
+  return !(std::abs(SignedVolume(local, c)) > 1e-9 * size * size * size);
 }
 
+// Renumbers the corners by the rotation of the cube that takes corner `i` to
+// corner 0 and its frame (CornerNeighbor(i, 0..2)) to the axes: the same cell, still
+// right-handed, with its frame at corner i.
 void MoveFrameToCorner(vtkIdType c[8], int i)
 {
   int index[8]; // corner of a cube position
@@ -150,6 +194,7 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->NumberOfMirroredHexahedra = 0;
   this->NumberOfNonManifoldFaces = 0;
   this->NumberOfUnfoldedFaces = 0;
+  this->NumberOfFoldedFaces = 0;
   this->NumberOfSingularFrames = 0;
   this->NumberOfFlatHexahedra = 0;
   this->NumberOfOtherCells = 0;
@@ -293,8 +338,10 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     if (j - i == 2)
     {
       const vtkIdType a = faces[i].Owner, b = faces[i + 1].Owner;
-      this->Neighbors[8 * (a / 6) + a % 6] = static_cast<int>(b / 6);
-      this->Neighbors[8 * (b / 6) + b % 6] = static_cast<int>(a / 6);
+      const bool folded = OnOneSide(local, this->CornerIds.data(), a, b);
+      this->NumberOfFoldedFaces += folded ? 1 : 0;
+      this->Neighbors[8 * (a / 6) + a % 6] = NeighborCode(b / 6, folded, false);
+      this->Neighbors[8 * (b / 6) + b % 6] = NeighborCode(a / 6, folded, false);
     }
     else
     {
@@ -310,6 +357,29 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     i = j;
   }
   std::sort(boundary.begin(), boundary.end());
+
+  // The inverted side of each fold: there the ray turns back in the cell it
+  // is in (ppirayInvertedSheets.h).
+  if (this->NumberOfFoldedFaces > 0)
+  {
+    auto cellOf = [](int code) { return code < -1 ? -code - 2 : code; };
+    const std::vector<unsigned char> inverted = ppiray::InvertedSheets(
+      numberOfHexahedra, 6, [&](vtkIdType h, int f) { return cellOf(this->Neighbors[8 * h + f]); },
+      [&](vtkIdType h, int f) { return this->Neighbors[8 * h + f] < -1; },
+      [&](vtkIdType h) { return std::abs(SignedVolume(local, this->CornerIds.data() + 8 * h)); });
+    for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
+    {
+      for (int f = 0; f < 6; ++f)
+      {
+        int& code = this->Neighbors[8 * h + f];
+        const int n = cellOf(code);
+        if (code < -1 && inverted[h] && !inverted[n])
+        {
+          code = NeighborCode(n, true, true);
+        }
+      }
+    }
+  }
 
   // Boundary triangles, wound outward (VTK's hexahedron faces are outward for
   // a right-handed cell), over a compact set of points.
@@ -403,6 +473,7 @@ void vtkHexahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfMirroredHexahedra: " << this->NumberOfMirroredHexahedra << "\n";
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
   os << indent << "NumberOfUnfoldedFaces: " << this->NumberOfUnfoldedFaces << "\n";
+  os << indent << "NumberOfFoldedFaces: " << this->NumberOfFoldedFaces << "\n";
   os << indent << "NumberOfNaNScalars: " << this->NumberOfNaNScalars << "\n";
   os << indent << "NumberOfSingularFrames: " << this->NumberOfSingularFrames << "\n";
   os << indent << "NumberOfFlatHexahedra: " << this->NumberOfFlatHexahedra << "\n";

@@ -59,6 +59,20 @@ public:
   /** Value stored as c0 of a hexahedron that must render empty (NaN scalar). */
   static constexpr float TransparentCellOffset() { return -3.0e38f; }
 
+  /**
+   * Neighbour code: the hexahedron; across a folded face (both cells on one
+   * side of it) -(hexahedron + 2) if the ray walks back through the
+   * neighbour, -(hexahedron + 2 + TurnBack()) if it walks back through the
+   * cell it is in (that one is inverted, the neighbour not:
+   * ppirayInvertedSheets.h); -1 on the boundary.
+   */
+  static constexpr int TurnBack() { return 1 << 29; }
+  static int NeighborCode(vtkIdType hexahedron, bool folded, bool turnBack)
+  {
+    const int h = static_cast<int>(hexahedron);
+    return folded ? -(h + 2 + (turnBack ? TurnBack() : 0)) : h;
+  }
+
   vtkIdType GetNumberOfHexahedra() const { return static_cast<vtkIdType>(this->CellIds.size()); }
   const double* GetOrigin() const { return this->Origin; }
   double GetLength() const { return this->Length; }
@@ -70,7 +84,10 @@ public:
   const std::vector<vtkIdType>& GetCornerIds() const { return this->CornerIds; }
   /** 24 floats per hexahedron (6 RGBA texels). */
   const std::vector<float>& GetCorners() const { return this->Corners; }
-  /** 8 ints per hexahedron (2 RGBA texels): 6 neighbours, the diagonal mask, 0. */
+  /**
+   * 8 ints per hexahedron (2 RGBA texels): 6 neighbour codes (NeighborCode()),
+   * the diagonal mask, 0.
+   */
   const std::vector<int>& GetNeighbors() const { return this->Neighbors; }
   /** 8 floats per hexahedron (2 RGBA texels). */
   const std::vector<float>& GetCoefficients() const { return this->Coefficients; }
@@ -91,6 +108,8 @@ public:
    * another of its faces. Both cells sharing such a face split it the same way.
    */
   vtkGetMacro(NumberOfUnfoldedFaces, vtkIdType);
+  /** Shared faces whose two hexahedra lie on one side of them (a tangled mesh). */
+  vtkGetMacro(NumberOfFoldedFaces, vtkIdType);
   vtkGetMacro(NumberOfNaNScalars, vtkIdType);
   /**
    * Hexahedra whose frame is singular, |det M| <= 1e-6 |a| |b| |c|, at every
@@ -130,6 +149,7 @@ protected:
   vtkIdType NumberOfMirroredHexahedra = 0;
   vtkIdType NumberOfNonManifoldFaces = 0;
   vtkIdType NumberOfUnfoldedFaces = 0;
+  vtkIdType NumberOfFoldedFaces = 0;
   vtkIdType NumberOfNaNScalars = 0;
   vtkIdType NumberOfSingularFrames = 0;
   vtkIdType NumberOfFlatHexahedra = 0;

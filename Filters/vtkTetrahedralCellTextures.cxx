@@ -76,6 +76,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->NumberOfDegenerateTetrahedra = 0;
   this->NumberOfInvertedTetrahedra = 0;
   this->NumberOfNonManifoldFaces = 0;
+  this->NumberOfFoldedFaces = 0;
   const vtkIdType numberOfTets = this->GetNumberOfTetrahedra();
   if (numberOfTets == 0 || !grid->GetPoints())
   {
@@ -105,8 +106,18 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     const double edge = LongestEdge(p);
     if (!(std::abs(volume6) > FlatVolumeRatio * edge * edge * edge))
     {
+      // A flat tetrahedron keeps its corners, for the ray to pass through it.
       this->Degenerate[t] = 1;
       ++degenerate;
+      for (int v = 0; v < 4; ++v)
+      {
+        float* corner = this->FacePlanes.data() + 16 * t + 4 * v;
+        for (int i = 0; i < 3; ++i)
+        {
+          corner[i] = static_cast<float>(p[v][i]);
+        }
+        corner[3] = FlatCellMarker();
+      }
       continue;
     }
     maximumEdge = std::max(maximumEdge, edge);
@@ -140,14 +151,23 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->MaximumEdgeLength = maximumEdge;
   this->NumberOfInvertedTetrahedra = inverted.load();
 
-  // Neighbours, without the flat tetrahedra.
+  // Neighbours: the flat tetrahedra between the others, folded faces marked.
   vtkNew<vtkUnstructuredGridCellAdjacency> adjacency;
-  adjacency->Build(numberOfPoints, tets, numberOfTets, this->Degenerate.data());
+  adjacency->Build(numberOfPoints, tets, numberOfTets, local, this->Degenerate.data());
   this->NumberOfNonManifoldFaces = adjacency->GetNumberOfNonManifoldFaces();
+  this->NumberOfFoldedFaces = adjacency->GetNumberOfFoldedFaces();
   const std::vector<vtkIdType>& neighbors = adjacency->GetNeighbors();
+  const std::vector<signed char>& neighborFaces = adjacency->GetNeighborFaces();
   this->Neighbors.resize(neighbors.size());
-  std::transform(neighbors.begin(), neighbors.end(), this->Neighbors.begin(),
-    [](vtkIdType n) { return static_cast<int>(n); });
+  for (size_t k = 0; k < neighbors.size(); ++k)
+  {
+    const vtkIdType t = static_cast<vtkIdType>(k / 4);
+    const bool folded = neighbors[k] >= 0 && adjacency->IsFolded(t, k % 4);
+    this->Neighbors[k] = neighbors[k] < 0 ? NoNeighbor()
+                                          : NeighborCode(neighbors[k], neighborFaces[k], folded,
+                                              folded && adjacency->IsInverted(t) &&
+                                                !adjacency->IsInverted(neighbors[k]));
+  }
 
   // Boundary triangles wound outward, over a compact set of points.
   const std::vector<vtkIdType>& boundary = adjacency->GetBoundaryFaces();
@@ -159,7 +179,8 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     int corner[3] = { vtkUnstructuredGridCellAdjacency::FaceVertex(f, 0),
       vtkUnstructuredGridCellAdjacency::FaceVertex(f, 1),
       vtkUnstructuredGridCellAdjacency::FaceVertex(f, 2) };
-    if (orientation[t] < 0)
+    if (orientation[t] < 0 ||
+      (this->Degenerate[t] && this->FacesTowards(t, corner, neighbors, neighborFaces)))
     {
       std::swap(corner[1], corner[2]);
     }
@@ -180,6 +201,37 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   }
   this->Modified();
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTetrahedralCellTextures::FacesTowards(vtkIdType t, const int corner[3],
+  const std::vector<vtkIdType>& neighbors, const std::vector<signed char>& neighborFaces) const
+{
+  // The first non-flat cell reached through flat neighbours (breadth first,
+  // a few dozen at most: flat cells come in small clusters).
+  const double* local = this->LocalPoints.data();
+  const vtkIdType* tet = this->Tets.data() + 4 * t;
+  std::vector<vtkIdType> queue = { t };
+  for (size_t k = 0; k < queue.size() && k < 64; ++k)
+  {
+    for (int g = 0; g < 4; ++g)
+    {
+      const vtkIdType n = neighbors[4 * queue[k] + g];
+      if (n < 0 || std::find(queue.begin(), queue.end(), n) != queue.end())
+      {
+        continue;
+      }
+      if (this->Degenerate[n])
+      {
+        queue.push_back(n);
+        continue;
+      }
+      const double* q = local + 3 * this->Tets[4 * n + neighborFaces[4 * queue[k] + g]];
+      return vtkUnstructuredGridCellAdjacency::SignedVolume6(local + 3 * tet[corner[0]],
+               local + 3 * tet[corner[1]], local + 3 * tet[corner[2]], q) > 0;
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -261,6 +313,7 @@ void vtkTetrahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
   os << indent << "NumberOfInvertedTetrahedra: " << this->NumberOfInvertedTetrahedra << "\n";
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
+  os << indent << "NumberOfFoldedFaces: " << this->NumberOfFoldedFaces << "\n";
   os << indent << "NumberOfNaNScalars: " << this->NumberOfNaNScalars << "\n";
   os << indent << "NumberOfUnsupportedCells: " << this->NumberOfUnsupportedCells << "\n";
   os << indent << "NumberOfSplitCells: " << this->NumberOfSplitCells << "\n";

@@ -4,14 +4,18 @@
  *
  * The data a cell-to-cell ray caster needs per tetrahedron (Espinha & Celes
  * 2005, Sec. 3.1; Weiler et al. 2003, Sec. 3): four outward face planes
- * (unit normal n_f and d_f = n_f . x on the face), four neighbour ids and the
- * linear scalar field s(x) = g . x + s0, i.e. 96 bytes per tetrahedron.
+ * (unit normal n_f and d_f = n_f . x on the face), four neighbour codes and
+ * the linear scalar field s(x) = g . x + s0, i.e. 96 bytes per tetrahedron.
  *
  * Two caches with one reason each to be rebuilt:
  * - BuildGeometry(): when points or cells change. Coordinates are expressed
  *   relative to the centre of the bounds (GetOrigin()) so that meshes far from
- *   the origin keep single-precision accuracy. Zero-volume tetrahedra are left
- *   out (their neighbours see a boundary; depth peeling re-enters behind them).
+ *   the origin keep single-precision accuracy. A zero-volume (flat)
+ *   tetrahedron stays in the mesh with its four corners in place of its
+ *   planes (FlatCellMarker() in each w): a ray crosses it with zero length,
+ *   out through the face that contains the point where it came in.
+ *   Neighbours are paired by side where more than two tetrahedra share a
+ *   face, and folded faces are marked (vtkUnstructuredGridCellAdjacency).
  *   Also gives the boundary triangles, wound outward, with their points.
  * - BuildField(): when the scalars change. Point scalars give the linear
  *   interpolant's gradient; cell scalars a constant. A tetrahedron touching a
@@ -58,6 +62,26 @@ public:
    */
   static constexpr float TransparentCellOffset() { return -3.0e38f; }
 
+  /** The w of a flat tetrahedron's four texels in GetFacePlanes(). */
+  static constexpr float FlatCellMarker() { return 3.0e38f; }
+
+  ///@{
+  /**
+   * Neighbour codes: 4 * tetrahedron + its face; where the face is folded
+   * (both tetrahedra on the same side of it), -(code + 2) if the ray walks
+   * back through the neighbour (it is inverted), -(code + 2 + TurnBack())
+   * if it walks back through the cell it is in (that one is inverted, the
+   * neighbour not); NoNeighbor() on the boundary.
+   */
+  static constexpr int NoNeighbor() { return -1; }
+  static constexpr int TurnBack() { return 1 << 29; }
+  static int NeighborCode(vtkIdType tet, int face, bool folded, bool turnBack)
+  {
+    const int code = static_cast<int>(4 * tet + face);
+    return folded ? -(code + 2 + (turnBack ? TurnBack() : 0)) : code;
+  }
+  ///@}
+
   vtkIdType GetNumberOfTetrahedra() const
   {
     return static_cast<vtkIdType>(this->CellIds.size());
@@ -70,9 +94,12 @@ public:
   double GetLength() const { return this->Length; }
   /** Longest edge of a rendered tetrahedron: no ray segment in a cell is longer. */
   double GetMaximumEdgeLength() const { return this->MaximumEdgeLength; }
-  /** 16 floats per tetrahedron: (n_f, d_f) for faces f = 0..3. */
+  /**
+   * 16 floats per tetrahedron: (n_f, d_f) for faces f = 0..3; a flat
+   * tetrahedron's corners (x_v, FlatCellMarker()) for v = 0..3.
+   */
   const std::vector<float>& GetFacePlanes() const { return this->FacePlanes; }
-  /** 4 ints per tetrahedron: neighbour through face f, -1 on the boundary. */
+  /** 4 ints per tetrahedron: the neighbour code through face f (NeighborCode()). */
   const std::vector<int>& GetNeighbors() const { return this->Neighbors; }
   /** 4 floats per tetrahedron: (g, s0) with s(x) = g . x + s0. */
   const std::vector<float>& GetField() const { return this->Field; }
@@ -89,6 +116,7 @@ public:
   vtkGetMacro(NumberOfDegenerateTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfInvertedTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
+  vtkGetMacro(NumberOfFoldedFaces, vtkIdType);
   vtkGetMacro(NumberOfNaNScalars, vtkIdType);
   vtkGetMacro(NumberOfUnsupportedCells, vtkIdType);
   /** Hexahedra, voxels, wedges and pyramids split into tetrahedra. */
@@ -104,6 +132,13 @@ public:
 protected:
   vtkTetrahedralCellTextures() = default;
   ~vtkTetrahedralCellTextures() override = default;
+
+  // Whether the triangle of flat tetrahedron t's corners (local indices,
+  // counter-clockwise) faces the first non-flat cell reached from t through
+  // flat ones: a boundary face of a flat cell faces away from the cells it
+  // lies on.
+  bool FacesTowards(vtkIdType t, const int corner[3], const std::vector<vtkIdType>& neighbors,
+    const std::vector<signed char>& neighborFaces) const;
 
   double Origin[3] = { 0, 0, 0 };
   double Length = 0;
@@ -122,6 +157,7 @@ protected:
   vtkIdType NumberOfDegenerateTetrahedra = 0;
   vtkIdType NumberOfInvertedTetrahedra = 0;
   vtkIdType NumberOfNonManifoldFaces = 0;
+  vtkIdType NumberOfFoldedFaces = 0;
   vtkIdType NumberOfNaNScalars = 0;
   vtkIdType NumberOfUnsupportedCells = 0;
   vtkIdType NumberOfSplitCells = 0;

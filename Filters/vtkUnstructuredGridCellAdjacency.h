@@ -12,9 +12,23 @@
  * face scans the cells around the face point that has fewest of them: O(cells)
  * for bounded vertex degree, parallel over cells with OpenMP.
  *
- * Cells marked in an optional mask are left out: their faces are not matched,
- * and their neighbours see a boundary there (the mapper uses this to drop
- * zero-volume tetrahedra).
+ * Real meshes share a face between more than two tetrahedra (zero-volume
+ * tetrahedra between two triangulations of a quadrilateral or on a face, a
+ * hexahedron collapsed into tetrahedra with repeated point ids, tangled
+ * regions). Given the coordinates, the faces on one face are paired by the
+ * side of the face their tetrahedron's fourth point lies on: positive with
+ * negative; a face with cells on one side only goes on through a flat
+ * (zero-volume) tetrahedron if one is there, else its same-side cells pair
+ * up (folded); flat tetrahedra on a face that non-flat cells close are left
+ * out (none of their faces is paired through it or a boundary); flat faces
+ * alone pair with each other. Two faces of one tetrahedron never pair; a
+ * face left without a partner is a boundary face. Faces with repeated point
+ * ids (zero area) are neither paired nor boundary.
+ *
+ * A pair whose two tetrahedra lie on the same side of their face is folded
+ * (the mesh turns back on itself there: an inverted cell in a tangled
+ * region); IsFolded() and IsInverted() tell the ray caster how to walk
+ * through it.
  */
 #ifndef vtkUnstructuredGridCellAdjacency_h
 #define vtkUnstructuredGridCellAdjacency_h
@@ -57,17 +71,34 @@ public:
 
   /**
    * Compute the neighbours of `numberOfTets` tetrahedra whose point ids are
-   * `tets[4 * i + 0..3]`. `ignore`, if given, has one entry per tetrahedron;
-   * non-zero entries are left out of the mesh.
+   * `tets[4 * i + 0..3]`. `points` (3 doubles per point), if given, orders
+   * the tetrahedra on a face shared by more than two by side and finds the
+   * folded faces; `flat` (one entry per tetrahedron), if given, marks
+   * zero-volume tetrahedra (they lie on neither side).
    */
   void Build(vtkIdType numberOfPoints, const vtkIdType* tets, vtkIdType numberOfTets,
-    const unsigned char* ignore = nullptr);
+    const double* points = nullptr, const unsigned char* flat = nullptr);
 
   /**
    * Neighbour of face f of tetrahedron t is GetNeighbors()[4 * t + f], -1 on
    * the boundary (and for left-out tetrahedra).
    */
   const std::vector<vtkIdType>& GetNeighbors() const { return this->Neighbors; }
+
+  /**
+   * The neighbour's local face that face f of tetrahedron t is paired with,
+   * GetNeighborFaces()[4 * t + f], -1 where there is no neighbour.
+   */
+  const std::vector<signed char>& GetNeighborFaces() const { return this->NeighborFaces; }
+
+  /** Whether face f of tetrahedron t and its neighbour's face are folded. */
+  bool IsFolded(vtkIdType t, int f) const { return this->Folded[4 * t + f] != 0; }
+
+  /**
+   * Whether tetrahedron t is on the inverted side of the mesh's folds
+   * (ppirayInvertedSheets.h; needs the coordinates).
+   */
+  bool IsInverted(vtkIdType t) const { return this->Inverted[t] != 0; }
 
   /**
    * Boundary faces as pairs (tetrahedron, local face), in tetrahedron order.
@@ -80,18 +111,25 @@ public:
   }
 
   /**
-   * Faces shared by more than two tetrahedra (a non-manifold mesh): the first
-   * match is kept.
+   * Tetrahedron faces whose three points more than two tetrahedron faces
+   * share (paired by side, see above).
    */
   vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
+
+  /** Tetrahedron faces paired with a neighbour on the same side (folded). */
+  vtkGetMacro(NumberOfFoldedFaces, vtkIdType);
 
 protected:
   vtkUnstructuredGridCellAdjacency() = default;
   ~vtkUnstructuredGridCellAdjacency() override = default;
 
   std::vector<vtkIdType> Neighbors;
+  std::vector<signed char> NeighborFaces;
+  std::vector<unsigned char> Folded;
+  std::vector<unsigned char> Inverted;
   std::vector<vtkIdType> BoundaryFaces;
   vtkIdType NumberOfNonManifoldFaces = 0;
+  vtkIdType NumberOfFoldedFaces = 0;
 
 private:
   vtkUnstructuredGridCellAdjacency(const vtkUnstructuredGridCellAdjacency&) = delete;

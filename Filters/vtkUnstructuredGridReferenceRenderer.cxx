@@ -27,8 +27,10 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <thread>
 #include <vector>
 
 vtkStandardNewMacro(vtkUnstructuredGridReferenceRenderer);
@@ -488,9 +490,12 @@ int InterpolatedPoints(vtkCell* cell)
 // split until the interpolated scalar is linear along the ray within
 // `tolerance` at its quarter points and midpoint, and every piece is then
 // integrated exactly like a tetrahedron's. `cellId` >= 0 selects cell scalars.
+// A piece is split at most MaximumSplitDepth times; `unresolved` counts the
+// pieces accepted there without meeting the tolerance.
+constexpr int MaximumSplitDepth = 24;
 void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scalars, vtkIdType cellId,
   const Vec3& origin, const Vec3& direction, const Vec3& centre, double tolerance,
-  std::vector<Segment>& out)
+  std::vector<Segment>& out, long long& unresolved)
 {
   const int n = InterpolatedPoints(cell);
   std::vector<double> weights(std::max(static_cast<int>(cell->GetNumberOfPoints()), 8)), values(n);
@@ -539,33 +544,36 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
     // EvaluatePosition itself accepts 1e-3 outside the parametric domain.
     return found != -1 && cell->GetParametricDistance(pcoords) <= 1e-9;
   };
-  auto linearize = [&](auto&& self, double a, double sa, double b, double sb, int depth) -> void {
-    double sq1, sm, sq3;
+  // [a, b] with its midpoint m known: the quarter points decide, and become
+  // the midpoints of the halves.
+  auto linearize = [&](auto&& self, double a, double sa, double sm, double b, double sb,
+                     int depth) -> void {
+    double sq1, sq3;
     const double m = 0.5 * (a + b);
-    evaluate(m, sm);
     evaluate(0.5 * (a + m), sq1);
     evaluate(0.5 * (m + b), sq3);
     const double deviation = std::max({ std::abs(sm - 0.5 * (sa + sb)),
       std::abs(sq1 - 0.75 * sa - 0.25 * sb), std::abs(sq3 - 0.25 * sa - 0.75 * sb) });
-    if (depth >= 24 || !(deviation > tolerance))
+    if (depth >= MaximumSplitDepth || !(deviation > tolerance))
     {
+      unresolved += deviation > tolerance ? 1 : 0;
       out.push_back({ a, m, sa, sm, { 0, 0, 0 }, id });
       out.push_back({ m, b, sm, sb, { 0, 0, 0 }, id });
       return;
     }
-    self(self, a, sa, m, sm, depth + 1);
-    self(self, m, sm, b, sb, depth + 1);
+    self(self, a, sa, sq1, m, sm, depth + 1);
+    self(self, m, sm, sq3, b, sb, depth + 1);
   };
   for (size_t k = 0; k + 1 < ts.size(); ++k)
   {
     const double a = std::max(ts[k], 0.0), b = ts[k + 1];
-    double s;
-    if (b > a && evaluate(0.5 * (a + b), s))
+    double sm;
+    if (b > a && evaluate(0.5 * (a + b), sm))
     {
       double sa, sb;
       evaluate(a, sa);
       evaluate(b, sb);
-      linearize(linearize, a, sa, b, sb, 0);
+      linearize(linearize, a, sa, sm, b, sb, 0);
     }
   }
 }
@@ -920,6 +928,34 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
 
   std::vector<vtkIdType> tets, cellIds, unsupported;
   vtkUnstructuredGridCellAdjacency::ExtractTetrahedra(input, tets, cellIds, unsupported);
+  // Quadratic and higher-order tetrahedra: the linear tetrahedron of their
+  // corners (the first four points), as the mapper renders them.
+  vtkIdType cornerTets = 0;
+  for (size_t u = 0; u < unsupported.size(); u += 2)
+  {
+    const int type = static_cast<int>(unsupported[u]);
+    if (type != VTK_QUADRATIC_TETRA && type != VTK_LAGRANGE_TETRAHEDRON &&
+      type != VTK_BEZIER_TETRAHEDRON)
+    {
+      continue;
+    }
+    for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
+    {
+      if (input->GetCellType(c) == type)
+      {
+        vtkIdType npts;
+        const vtkIdType* pts;
+        input->GetCellPoints(c, npts, pts);
+        tets.insert(tets.end(), pts, pts + 4);
+        cellIds.push_back(c);
+        ++cornerTets;
+      }
+    }
+  }
+  if (cornerTets)
+  {
+    vtkWarningMacro(<< cornerTets << " higher-order tetrahedra rendered through their corners.");
+  }
   const vtkIdType numberOfTets = static_cast<vtkIdType>(cellIds.size());
   // Hexahedra, voxels, wedges and pyramids take the general path; their
   // points in CSR form.
@@ -930,7 +966,8 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
     for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
     {
       const int type = input->GetCellType(c);
-      if (type == VTK_TETRA)
+      if (type == VTK_TETRA || type == VTK_QUADRATIC_TETRA || type == VTK_LAGRANGE_TETRAHEDRON ||
+        type == VTK_BEZIER_TETRAHEDRON)
       {
         continue;
       }
@@ -1093,10 +1130,15 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
 
   float* out = rgba->GetPointer(0);
   const int numberOfTiles = tilesX * tilesY;
+  std::atomic<int> tilesDone(0);
+  std::atomic<long long> unresolvedPieces(0);
+  const std::thread::id caller = std::this_thread::get_id();
+  this->UpdateProgress(0.0);
 #pragma omp parallel for schedule(dynamic)
   for (int tile = 0; tile < numberOfTiles; ++tile)
   {
     const int tx = tile % tilesX, ty = tile / tilesX;
+    long long unresolved = 0;
     std::vector<Tetrahedron> local;
     std::vector<size_t> localGeneral; // indices into generalCells
     vtkNew<vtkGenericCell> cell;
@@ -1197,12 +1239,25 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
           const vtkIdType c = generalCells[g];
           input->GetCell(c, cell);
           GeneralCellSegments(c, cell, scalars, cellScalars ? c : -1, origin, direction, centre,
-            linearTolerance, segments);
+            linearTolerance, segments, unresolved);
         }
         IntegrateRay(segments, tf, iso, origin, direction, centre, gradientAt,
           out + 4 * (static_cast<size_t>(py) * width + px));
       }
     }
+    unresolvedPieces += unresolved;
+    const int done = ++tilesDone;
+    if (std::this_thread::get_id() == caller) // observers run on the calling thread only
+    {
+      this->UpdateProgress(static_cast<double>(done) / numberOfTiles);
+    }
+  }
+  this->UpdateProgress(1.0);
+  if (unresolvedPieces > 0)
+  {
+    vtkWarningMacro(<< unresolvedPieces << " ray pieces in general cells were split "
+                    << MaximumSplitDepth << " times and still not linear within "
+                    << "QuadratureTolerance: the image may be off by more there.");
   }
   return 1;
 }

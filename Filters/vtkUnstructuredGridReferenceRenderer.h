@@ -28,6 +28,8 @@
  * interpolation spans, planar or not), the inside intervals are split until
  * the interpolated scalar is linear along the ray within QuadratureTolerance
  * (relative to the scalar range), and each piece is integrated exactly.
+ * Quadratic and higher-order tetrahedra are rendered as the linear
+ * tetrahedra of their corners (as the mapper renders them), with a warning.
  * Other cell types are skipped with a warning.
  *
  * Isosurfaces (SetBlendMode(ISOSURFACE), or embedded in the composite
@@ -40,6 +42,11 @@
  * (normal: the interpolated field's gradient, turned towards the viewer;
  * positional lights as point lights). The same definition as
  * vtkUnstructuredGridGPURayCastMapper's, evaluated independently.
+ *
+ * Work per ray is bounded: a piece of a general cell is split at most 24
+ * times; pieces accepted there without meeting QuadratureTolerance are
+ * counted and reported in one warning. Progress events per finished tile
+ * (from the calling thread).
  *
  * Scalars: SetInputArrayToProcess(0, 0, 0, association, name); default the
  * active point scalars, else the active cell scalars; first component.

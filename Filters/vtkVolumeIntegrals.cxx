@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <limits>
 
 namespace
 {
 constexpr double SqrtPi = 1.7724538509055160273;
 
 // J_n(a) = int_0^1 u^n exp(-a u) du for n = 0..N-1: the series
-// sum_k (-a)^k / (k! (n + k + 1)) for small a, else the upward recurrence
+// sum_k (-a)^k / (k! (n + k + 1)) for small a (to the first term below
+// 1e-17 of the sum: all later ones are smaller), else the upward recurrence
 // J_n = (n J_{n-1} - e^{-a}) / a from J_0 = (1 - e^{-a}) / a.
 template <int N>
 void MomentsOfExponential(double a, double (&j)[N])
@@ -22,7 +22,12 @@ void MomentsOfExponential(double a, double (&j)[N])
       double term = 1.0, sum = 0.0;
       for (int k = 0; k < 60; ++k)
       {
-        sum += term / (n + k + 1);
+        const double added = term / (n + k + 1);
+        sum += added;
+        if (std::abs(added) < 1e-17 * sum)
+        {
+          break;
+        }
         term *= -a / (k + 1);
       }
       j[n] = sum;

@@ -511,12 +511,19 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateGeometry(vtkUnstructuredGridBase
   if (cells.GetNumberOfDegenerateTetrahedra() > 0)
   {
     vtkWarningMacro(<< cells.GetNumberOfDegenerateTetrahedra()
-                    << " zero-volume tetrahedra skipped.");
+                    << " zero-volume tetrahedra: crossed with zero length.");
   }
   if (cells.GetNumberOfNonManifoldFaces() > 0)
   {
     vtkWarningMacro(<< cells.GetNumberOfNonManifoldFaces()
-                    << " faces are shared by more than two tetrahedra (non-manifold mesh).");
+                    << " tetrahedron faces are shared by more than two tetrahedra (non-manifold"
+                       " mesh): paired by side.");
+  }
+  if (cells.GetNumberOfFoldedFaces() > 0)
+  {
+    vtkWarningMacro(<< cells.GetNumberOfFoldedFaces() / 2
+                    << " faces join two tetrahedra on the same side (inverted cells, a tangled"
+                       " mesh): each stretch of a ray is integrated once.");
   }
   return true;
 }
@@ -570,6 +577,12 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateHexahedralGeometry(vtkUnstructur
   {
     vtkWarningMacro(<< hexes.GetNumberOfNonManifoldFaces()
                     << " faces are shared by more than two hexahedra (non-manifold mesh).");
+  }
+  if (hexes.GetNumberOfFoldedFaces() > 0)
+  {
+    vtkWarningMacro(<< hexes.GetNumberOfFoldedFaces()
+                    << " faces join two hexahedra on the same side (inverted cells, a tangled"
+                       " mesh): each stretch of a ray is integrated once.");
   }
   in.Native = true;
   in.GeometryValid = true;

@@ -9,7 +9,6 @@
 #include "vtkImageData.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
-#include "vtkMultiProcessController.h"
 #include "vtkStructuredGrid.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolumeRepresentationPreprocessor.h"
@@ -216,17 +215,18 @@ void vtkPPIRayVolumeRepresentation::SetHexahedronMode(int mode)
 int vtkPPIRayVolumeRepresentation::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // In one process the cells reach the mapper as they are: hexahedra when the
-  // mapper renders them natively, and meshes of tetrahedra, hexahedra, wedges
-  // and pyramids in any mode (the mapper's conforming split, with shared
-  // diagonals, instead of vtkDataSetTriangleFilter's, which leaves
-  // zero-volume and non-manifold tetrahedra on real FE meshes and can take
-  // minutes on their non-planar faces).
+  // The cells reach the mapper as they are, in one process and on each rank
+  // in parallel (the view then redistributes whole cells for ordered
+  // compositing): hexahedra when the mapper renders them natively, and
+  // meshes of tetrahedra, hexahedra, wedges and pyramids in any mode (the
+  // mapper's conforming split, with shared diagonals, instead of
+  // vtkDataSetTriangleFilter's, which leaves zero-volume and non-manifold
+  // tetrahedra on real FE meshes and can take minutes on their non-planar
+  // faces).
   this->PassesCellsUnsplit = false;
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  const bool serial = !(controller && controller->GetNumberOfProcesses() > 1) &&
-    inputVector[0]->GetNumberOfInformationObjects() == 1;
-  vtkDataObject* input = serial ? vtkDataObject::GetData(inputVector[0], 0) : nullptr;
+  vtkDataObject* input = inputVector[0]->GetNumberOfInformationObjects() == 1
+    ? vtkDataObject::GetData(inputVector[0], 0)
+    : nullptr;
   vtkDataSet* data = input ? SingleDataSet(input) : nullptr;
   const bool subdivide =
     this->Mapper->GetHexahedronMode() == vtkUnstructuredGridGPURayCastMapper::HEXAHEDRON_SUBDIVIDE;

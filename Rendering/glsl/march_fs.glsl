@@ -3,13 +3,25 @@
 // the cell it leaves the mesh from, one tetrahedron at a time.
 //
 // Cell textures (Espinha & Celes 2005, Sec. 3.1), all in the mesh's local frame:
-//   facePlanes[4 t + f] = (n_f, d_f), outward unit normal, n_f . x = d_f on face f
-//   neighbors[t]        = cell through face f (-1: boundary)
+//   facePlanes[4 t + f] = (n_f, d_f), outward unit normal, n_f . x = d_f on face f;
+//                         a flat cell: its corners (x_v, FLAT_CELL)
+//   neighbors[t][f]     = 4 t' + f' of the cell and face through face f;
+//                         across a folded face -(4 t' + f' + 2), or
+//                         -(4 t' + f' + 2 + TURN_BACK) where t is the
+//                         inverted side; -1: boundary
 //   field[t]            = (g, s0): s(x) = g . x + s0 (s0 = -3e38: render empty)
 // The exit face is the nearest face plane the ray is heading out of
 // (Weiler et al. 2003, Sec. 3.2): t_f = (d_f - n_f . o) / (n_f . r), n_f . r > 0.
 // Every segment is integrated by integrateSegment(), the integration mode,
 // substituted below with the transfer function lookup.
+//
+// Real meshes (Documentation/algorithms.md, "Degenerate, inverted and tangled
+// cells"): a flat cell is crossed with zero length; at a folded face the ray
+// walks backwards (through the inverted cell across it, or through the
+// inverted cell it is in), out through the face where the line enters each
+// cell, integrating nothing, until it crosses a folded face into the next
+// forward part of the mesh; t never decreases, so no stretch is integrated
+// twice.
 
 uniform samplerBuffer facePlanes;
 uniform isamplerBuffer neighbors;
@@ -83,6 +95,51 @@ vec4 facePlane(int t, int f)
   return texelFetch(facePlanes, 4 * t + f);
 }
 
+const float FLAT_CELL = 1.0e38;
+const int TURN_BACK = 1 << 29;
+
+
+// The face of flat cell t (corners c_v, face f = the three other than c_f),
+// other than `entryFace`, whose triangle best contains x: the largest
+// smallest barycentric coordinate of x projected on the face's plane,
+// lambda_a = m . ((b - x) x (c - x)) / |m|^2 with m = (b - a) x (c - a);
+// faces of (relatively) zero area are never taken. -1: none.
+int flatCellExit(int t, int entryFace, vec3 x)
+{
+  vec3 c[4];
+  for (int v = 0; v < 4; ++v)
+  {
+    c[v] = texelFetch(facePlanes, 4 * t + v).xyz;
+  }
+  vec3 m[4];
+  float largest = 0.0;
+  for (int f = 0; f < 4; ++f)
+  {
+    m[f] = cross(c[(f + 2) & 3] - c[(f + 1) & 3], c[(f + 3) & 3] - c[(f + 1) & 3]);
+    largest = max(largest, dot(m[f], m[f]));
+  }
+  int best = -1;
+  float bestScore = -INFINITY;
+  for (int f = 0; f < 4; ++f)
+  {
+    float area2 = dot(m[f], m[f]);
+    if (f == entryFace || !(area2 > 1.0e-8 * largest))
+    {
+      continue;
+    }
+    vec3 a = c[(f + 1) & 3] - x, b = c[(f + 2) & 3] - x, d = c[(f + 3) & 3] - x;
+    float la = dot(m[f], cross(b, d)) / area2;
+    float lb = dot(m[f], cross(d, a)) / area2;
+    float score = min(min(la, lb), 1.0 - la - lb);
+    if (score > bestScore)
+    {
+      bestScore = score;
+      best = f;
+    }
+  }
+  return best;
+}
+
 void main()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -93,9 +150,6 @@ void main()
   {
     return;
   }
-  int cell = cellFace / 4;
-  int entryFace = cellFace - 4 * cell;
-
   // The ray through the pixel centre, in the local frame.
   vec2 ndc = 2.0 * texCoord - 1.0;
   vec3 origin, direction;
@@ -104,58 +158,106 @@ void main()
   // Opaque geometry stops the ray at its depth.
   float tStop = opaqueStop(opaqueDepth, pixel, ndc, origin, direction);
 
+  int cell = cellFace / 4;
+  int entryFace = cellFace - 4 * cell;
   vec4 plane = facePlane(cell, entryFace);
+  if (plane.w > FLAT_CELL)
+  {
+    // A flat cell on the boundary: the plane of its entry triangle.
+    vec3 a = facePlane(cell, (entryFace + 1) & 3).xyz;
+    vec3 n = cross(facePlane(cell, (entryFace + 2) & 3).xyz - a,
+      facePlane(cell, (entryFace + 3) & 3).xyz - a);
+    n = dot(n, direction) > 0.0 ? -n : n;
+    plane = vec4(n, dot(n, a));
+  }
   float t = max((plane.w - dot(plane.xyz, origin)) / min(dot(plane.xyz, direction), -1.0e-30), resume);
   int k = -1;
   int j = -1; // isovalue interval, set at the first cell
   vec4 color = vec4(0.0);
   float reached = t;
+  bool backwards = false;
   for (int step = 0; step < maximumSteps; ++step)
   {
-    float tExit = INFINITY;
     int exitFace = -1;
-    for (int f = 0; f < 4; ++f)
+    if (facePlane(cell, 0).w > FLAT_CELL)
     {
-      vec4 p = facePlane(cell, f);
-      float along = dot(p.xyz, direction);
-      if (f != entryFace && along > 0.0)
+      exitFace = flatCellExit(cell, entryFace, origin + t * direction);
+    }
+    else if (backwards)
+    {
+      // The cell's stretch lies behind t: out through the face the line
+      // enters it by, the farthest plane it is heading into.
+      float tEntry = -INFINITY;
+      for (int f = 0; f < 4; ++f)
       {
+        vec4 p = facePlane(cell, f);
+        float along = dot(p.xyz, direction);
         float tf = (p.w - dot(p.xyz, origin)) / along;
-        if (tf < tExit)
+        if (f != entryFace && along < 0.0 && tf > tEntry)
+        {
+          tEntry = tf;
+          exitFace = f;
+        }
+      }
+    }
+    else
+    {
+      float tExit = INFINITY;
+      for (int f = 0; f < 4; ++f)
+      {
+        vec4 p = facePlane(cell, f);
+        float along = dot(p.xyz, direction);
+        float tf = (p.w - dot(p.xyz, origin)) / along;
+        if (f != entryFace && along > 0.0 && tf < tExit)
         {
           tExit = tf;
           exitFace = f;
         }
       }
+      if (exitFace < 0)
+      {
+        break;
+      }
+      tExit = max(tExit, t);
+      float tEnd = min(tExit, tStop);
+      vec4 g = texelFetch(field, cell);
+      if (g.w > -1.0e38 && tEnd > t)
+      {
+        float sFront = dot(g.xyz, origin + t * direction) + g.w;
+        float sBack = dot(g.xyz, origin + tEnd * direction) + g.w;
+        k = integrateTetrahedronSegment(sFront, sBack, tEnd - t, g.xyz, origin + t * direction,
+          direction, k, j, color);
+      }
+      reached = max(reached, tEnd);
+      if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
+      {
+        break;
+      }
+      t = tExit;
     }
     if (exitFace < 0)
     {
       break;
     }
-    tExit = max(tExit, t);
-    float tEnd = min(tExit, tStop);
-    reached = tEnd;
-    vec4 g = texelFetch(field, cell);
-    if (g.w > -1.0e38 && tEnd > t)
-    {
-      float sFront = dot(g.xyz, origin + t * direction) + g.w;
-      float sBack = dot(g.xyz, origin + tEnd * direction) + g.w;
-      k = integrateTetrahedronSegment(sFront, sBack, tEnd - t, g.xyz, origin + t * direction,
-        direction, k, j, color);
-    }
-    if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
-    {
-      break;
-    }
     int next = texelFetch(neighbors, cell)[exitFace];
-    if (next < 0)
+    if (next == -1)
     {
       break;
     }
-    ivec4 back = texelFetch(neighbors, next);
-    entryFace = back.x == cell ? 0 : (back.y == cell ? 1 : (back.z == cell ? 2 : 3));
-    cell = next;
-    t = tExit;
+    bool folded = next < -1;
+    next = folded ? -next - 2 : next;
+    bool turnBack = next >= TURN_BACK;
+    next -= turnBack ? TURN_BACK : 0;
+    if (folded && turnBack && !backwards)
+    {
+      // Out of an inverted cell into a forward one: back through this one.
+      backwards = true;
+      entryFace = exitFace;
+      continue;
+    }
+    backwards = backwards != folded;
+    cell = next / 4;
+    entryFace = next - 4 * cell;
   }
   fragOutput0 = before + (1.0 - before.a) * color;
   fragOutput1 = vec4(reached);

@@ -6,7 +6,9 @@
 // Cell textures (vtkHexahedralCellTextures), in the mesh's local frame:
 //   hexCorners[6 h .. 6 h + 5]   the 8 corners, 24 floats, right-handed
 //   hexNeighbors[2 h]            cells through faces 0..3, [2 h + 1]: faces 4, 5,
-//                                the diagonal mask, 0 (-1: boundary)
+//                                the diagonal mask, 0 (-1: boundary; across a
+//                                folded face -(h' + 2), or -(h' + 2 + TURN_BACK)
+//                                where h is the inverted side)
 //   hexCoefficients[2 h .. + 1]  c0..c7 of the field in the cell frame (c0 = -3e38: empty)
 // Each face (q0, q1, q2, q3) of vtkHexahedron is two triangles split along
 // q0-q2, or q1-q3 when the face's bit is set: the same split as the
@@ -14,7 +16,12 @@
 // is the nearest triangle the ray actually crosses; if rounding lets the ray
 // slip between the two (an edge), the nearest face plane it heads out of
 // (the convex-cell rule of the tetrahedral march). A folded entry face can be
-// the exit too (exitCandidate).
+// the exit too (exitCandidate). Across a folded face (both cells on one side
+// of it: a tangled mesh) the ray walks backwards (through the inverted cell
+// across it, or through the inverted cell it is in), through the triangle
+// where the line enters each cell, integrating nothing, until it crosses a
+// folded face into the next forward part (the tetrahedral rule:
+// Documentation/algorithms.md).
 
 uniform samplerBuffer hexCorners;
 uniform isamplerBuffer hexNeighbors;
@@ -132,11 +139,21 @@ ivec3 faceTriangle(int f, int t, int mask)
   return t == 0 ? ivec3(q0, q1, q2) : ivec3(q0, q2, q3);
 }
 
+// The neighbour code through face f of hexahedron h.
 int neighborThrough(int h, int f)
 {
   ivec4 n = texelFetch(hexNeighbors, 2 * h + f / 4);
   int i = f - 4 * (f / 4);
   return i == 0 ? n.x : (i == 1 ? n.y : (i == 2 ? n.z : n.w));
+}
+
+const int TURN_BACK = 1 << 29;
+
+// The hexahedron of a neighbour code (-1: none).
+int neighborCell(int code)
+{
+  int h = code < -1 ? -code - 2 : code;
+  return h >= TURN_BACK ? h - TURN_BACK : h;
 }
 
 // Whether the ray reaches triangle v (corner indices into p) at parameter tf:
@@ -152,6 +169,17 @@ bool crossesTriangle(vec3 p[8], ivec3 v, vec3 origin, vec3 direction, float tf)
     dot(cross(c - b, x - b), normal) >= tolerance && dot(cross(a - c, x - c), normal) >= tolerance;
 }
 
+// Where the ray meets the plane of triangle v (corner indices into p), t_f,
+// and n . r with n = (p_v1 - p_v0) x (p_v2 - p_v0), outward for a
+// right-handed cell: > 0 heading out, < 0 heading in.
+void trianglePlaneCrossing(vec3 p[8], ivec3 v, vec3 origin, vec3 direction, out float along,
+  out float tf)
+{
+  vec3 normal = cross(p[v.y] - p[v.x], p[v.z] - p[v.x]);
+  along = dot(normal, direction);
+  tf = dot(normal, p[v.x] - origin) / along;
+}
+
 // Whether a triangle of face f, met at tf, may be where the ray leaves a cell
 // it entered at t through `entryFace`. A triangle of the entry face may, if
 // it is met clearly ahead of t: a non-planar face folded across a grazing ray
@@ -161,6 +189,16 @@ bool crossesTriangle(vec3 p[8], ivec3 v, vec3 origin, vec3 direction, float tf)
 bool exitCandidate(int f, int entryFace, float tf, float t)
 {
   return f != entryFace || tf > t + 1.0e-5 * abs(t);
+}
+
+// The face of hexahedron h whose neighbour is `from`.
+int enteredFace(int h, int from)
+{
+  ivec4 n0 = texelFetch(hexNeighbors, 2 * h);
+  ivec4 n1 = texelFetch(hexNeighbors, 2 * h + 1);
+  return neighborCell(n0.x) == from ? 0 : neighborCell(n0.y) == from ? 1
+    : neighborCell(n0.z) == from ? 2 : neighborCell(n0.w) == from ? 3
+    : neighborCell(n1.x) == from ? 4 : neighborCell(n1.y) == from ? 5 : -1;
 }
 
 void main()
@@ -195,8 +233,49 @@ void main()
   int j = -1; // isovalue interval, set at the first cell
   vec4 color = vec4(0.0);
   float reached = t;
+  bool backwards = false;
   for (int step = 0; step < maximumSteps; ++step)
   {
+    if (backwards)
+    {
+      // Out through the triangle the line enters the cell by: the farthest
+      // one it crosses heading in (else the farthest plane heading in).
+      float tIn = -INFINITY, tCrossed = -INFINITY;
+      int inFace = -1, crossedFace = -1;
+      for (int f = 0; f < 6; ++f)
+      {
+        for (int side = 0; side < 2; ++side)
+        {
+          ivec3 v = faceTriangle(f, side, mask);
+          float along, tf;
+          trianglePlaneCrossing(p, v, origin, direction, along, tf);
+          if (f != entryFace && along < 0.0 && tf > tIn)
+          {
+            tIn = tf;
+            inFace = f;
+          }
+          if (f != entryFace && along < 0.0 && tf > tCrossed &&
+            crossesTriangle(p, v, origin, direction, tf))
+          {
+            tCrossed = tf;
+            crossedFace = f;
+          }
+        }
+      }
+      int back = crossedFace >= 0 ? crossedFace : inFace;
+      int code = back >= 0 ? neighborThrough(cell, back) : -1;
+      if (code == -1)
+      {
+        break;
+      }
+      backwards = code >= -1;
+      int next = neighborCell(code);
+      entryFace = enteredFace(next, cell);
+      cell = next;
+      loadCorners(cell, p);
+      mask = texelFetch(hexNeighbors, 2 * cell + 1).z;
+      continue;
+    }
     // Exit: the nearest face plane the ray heads out of (the convex-cell
     // rule), accepted if the ray crosses that triangle; else (a concave fold
     // of a non-planar face) the nearest triangle actually crossed.
@@ -207,9 +286,8 @@ void main()
       for (int side = 0; side < 2; ++side)
       {
         ivec3 v = faceTriangle(f, side, mask);
-        vec3 normal = cross(p[v.y] - p[v.x], p[v.z] - p[v.x]);
-        float along = dot(normal, direction);
-        float tf = dot(normal, p[v.x] - origin) / along;
+        float along, tf;
+        trianglePlaneCrossing(p, v, origin, direction, along, tf);
         if (along > 0.0 && tf < tPlane && exitCandidate(f, entryFace, tf, t))
         {
           tPlane = tf;
@@ -231,9 +309,8 @@ void main()
       for (int side = 0; side < 2; ++side)
       {
         ivec3 v = faceTriangle(f, side, mask);
-        vec3 normal = cross(p[v.y] - p[v.x], p[v.z] - p[v.x]);
-        float along = dot(normal, direction);
-        float tf = dot(normal, p[v.x] - origin) / along;
+        float along, tf;
+        trianglePlaneCrossing(p, v, origin, direction, along, tf);
         if (along > 0.0 && tf < tHit && tf >= t - 1.0e-6 * abs(t) &&
           exitCandidate(f, entryFace, tf, t) &&
           crossesTriangle(p, v, origin, direction, tf))
@@ -274,15 +351,22 @@ void main()
     {
       break;
     }
-    int next = neighborThrough(cell, exitFace);
-    if (next < 0)
+    int code = neighborThrough(cell, exitFace);
+    if (code == -1)
     {
       break;
     }
-    ivec4 back0 = texelFetch(hexNeighbors, 2 * next);
-    ivec4 back1 = texelFetch(hexNeighbors, 2 * next + 1);
-    entryFace = back0.x == cell ? 0 : back0.y == cell ? 1 : back0.z == cell ? 2
-      : back0.w == cell ? 3 : back1.x == cell ? 4 : back1.y == cell ? 5 : -1;
+    if (code < -1 - TURN_BACK)
+    {
+      // Out of an inverted cell into a forward one: back through this one.
+      backwards = true;
+      entryFace = exitFace;
+      t = tExit;
+      continue;
+    }
+    backwards = code < -1;
+    int next = neighborCell(code);
+    entryFace = enteredFace(next, cell);
     cell = next;
     loadCorners(cell, p);
     mask = texelFetch(hexNeighbors, 2 * cell + 1).z;

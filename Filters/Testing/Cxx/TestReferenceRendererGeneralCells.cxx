@@ -13,9 +13,12 @@
 //    converged and bisected every ray piece 24 levels deep: a real FE result
 //    with NaN in a normalized stress never finished);
 // 5. hexahedra listing 20 point ids (a serendipity hexahedron written as
-//    VTK_HEXAHEDRON, mid-edge values NaN) render from their 8 corners.
+//    VTK_HEXAHEDRON, mid-edge values NaN) render from their 8 corners;
+// 6. progress events go from 0 to 1 in order.
 
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkCommand.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
@@ -35,6 +38,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <vector>
 
 namespace
 {
@@ -302,6 +306,31 @@ int TestReferenceRendererGeneralCells(int, char*[])
   {
     std::printf("FAILED: a hexahedron with extra ids is not rendered from its corners\n");
     ++errors;
+  }
+
+  // 6. Progress: events from 0 to 1, one per tile at most, never backwards.
+  {
+    vtkNew<vtkUnstructuredGridReferenceRenderer> reference;
+    reference->SetInputData(plain);
+    reference->SetVolumeProperty(property);
+    reference->SetCamera(camera);
+    reference->SetImageSize(Size, Size);
+    std::vector<double> progress;
+    vtkNew<vtkCallbackCommand> observer;
+    observer->SetClientData(&progress);
+    observer->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+      static_cast<std::vector<double>*>(client)->push_back(*static_cast<double*>(data));
+    });
+    reference->AddObserver(vtkCommand::ProgressEvent, observer);
+    reference->Update();
+    const bool ordered = std::is_sorted(progress.begin(), progress.end());
+    std::printf("progress: %zu events, last %.2f\n", progress.size(),
+      progress.empty() ? -1.0 : progress.back());
+    if (progress.size() < 3 || !ordered || progress.front() != 0.0 || progress.back() != 1.0)
+    {
+      std::printf("FAILED: progress events do not go from 0 to 1\n");
+      ++errors;
+    }
   }
   return errors == 0 ? 0 : 1;
 }

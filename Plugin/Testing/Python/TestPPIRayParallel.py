@@ -21,7 +21,11 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENE = os.path.join(HERE, "ppiray_parallel_scene.py")
-TETRAHEDRA = {"wavelet": 5 * 20 ** 3, "hole": 71472}
+# Cells each scene's ranks must render between them: (tetrahedra, hexahedra);
+# None where the count depends on the partition (each rank splits its mixed
+# cells along diagonals chosen by its own point ids).
+CELLS = {"wavelet": (5 * 20 ** 3, 0), "voxels": (0, 20 ** 3), "clipped": None,
+         "hole": (71472, 0)}
 ATTEMPTS = 3
 TIMEOUT = 120  # seconds per run; a run takes ~5 s here
 
@@ -41,11 +45,11 @@ def run(command, label):
 
 
 def ranks_report(output):
-    """{scene: {rank: tetrahedra}} from the scene script's PPIRAY lines."""
+    """{scene: {rank: (tetrahedra, hexahedra)}} from the scene script's PPIRAY lines."""
     report = {}
-    for rank, _, scene, tets in re.findall(
-            r"PPIRAY rank (\d+) of (\d+) scene (\w+) tetrahedra (\d+)", output):
-        report.setdefault(scene, {})[int(rank)] = int(tets)
+    for rank, _, scene, tets, hexes in re.findall(
+            r"PPIRAY rank (\d+) of (\d+) scene (\w+) tetrahedra (\d+) hexahedra (\d+)", output):
+        report.setdefault(scene, {})[int(rank)] = (int(tets), int(hexes))
     return report
 
 
@@ -87,14 +91,15 @@ def main(pvbatch, mpiexec, plugin, temporary, data):
 
     failures = []
     report = ranks_report(output)
-    for scene, total in TETRAHEDRA.items():
+    for scene, total in CELLS.items():
         per_rank = report.get(scene, {})
-        print("%s: tetrahedra per rank %s" % (scene, per_rank))
-        if sorted(per_rank) != [0, 1] or min(per_rank.values()) == 0:
+        print("%s: (tetrahedra, hexahedra) per rank %s" % (scene, per_rank))
+        rendered = tuple(sum(cells[i] for cells in per_rank.values()) for i in range(2))
+        if sorted(per_rank) != [0, 1] or min(sum(c) for c in per_rank.values()) == 0:
             failures.append("%s: not both ranks rendered cells: %s" % (scene, per_rank))
-        elif sum(per_rank.values()) != total:
-            failures.append("%s: ranks rendered %d tetrahedra, the mesh has %d"
-                            % (scene, sum(per_rank.values()), total))
+        elif total is not None and rendered != total:
+            failures.append("%s: ranks rendered (tetrahedra, hexahedra) %s, the mesh has %s"
+                            % (scene, rendered, total))
         a = load_rgb(os.path.join(one, scene + ".png"))
         b = load_rgb(os.path.join(two, scene + ".png"))
         if a.shape != b.shape:

@@ -94,6 +94,39 @@ inline vtkSmartPointer<vtkUnstructuredGrid> VoxelTetrahedra(
   return grid;
 }
 
+// Tangled: the points of a mesh over [0, 1]^3 with z levels of 1/6 moved so
+// that levels 3 and 4 swap over (z 0.62 and 0.45, bent by 0.04 sin 6x): the
+// layer between them is inverted, the mesh folds back on itself twice.
+inline void FoldLayers(vtkUnstructuredGrid* grid)
+{
+  const double levels[7] = { 0.0, 1.0 / 6, 2.0 / 6, 0.62, 0.45, 0.75, 1.0 };
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    grid->GetPoint(i, x);
+    const int level = static_cast<int>(std::lround(6 * x[2]));
+    x[2] = levels[level] + ((level == 3 || level == 4) ? 0.04 * std::sin(6.0 * x[0]) : 0.0);
+    grid->GetPoints()->SetPoint(i, x);
+  }
+}
+
+// Point scalars "s" = 0.5 x + 0.4 y + 0.4 z (0 to 1.3 over the unit cube):
+// linear in world coordinates, so every cell covering a point (overlapping
+// or folded cells) gives it the same value, and a trilinear (isoparametric)
+// cell reproduces it exactly.
+inline void WorldLinearField(vtkUnstructuredGrid* grid)
+{
+  vtkNew<vtkDoubleArray> s;
+  s->SetName("s");
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    grid->GetPoint(i, x);
+    s->InsertNextValue(0.5 * x[0] + 0.4 * x[1] + 0.4 * x[2]);
+  }
+  grid->GetPointData()->SetScalars(s);
+}
+
 // A smooth field on [0, 1]^3-ish coordinates.
 inline double Blob(double x, double y, double z)
 {

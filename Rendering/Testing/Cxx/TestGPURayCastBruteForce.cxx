@@ -4,8 +4,13 @@
 // small scenes that stress what the two could get wrong together: a thin
 // opacity spike, a non-convex mesh in two parts, cell scalars, ParaView's
 // default Cool to Warm (Diverging) and a Lab map, inverted cells, zero-volume
-// cells on interior faces, scalars near 1e6, a vector array rendered by
-// magnitude. Bounds per scene (every
+// cells on interior faces (with a fourth point on the face, or a repeated
+// point id), flat tetrahedra between two triangulations of a quadrilateral,
+// a mesh folded back on itself (a layer of inverted cells) and two
+// overlapping parts (both with a field linear in world coordinates, so that
+// every cell covering a point gives it the same value and the union of the
+// cells is the one right answer), scalars near 1e6, a vector array rendered
+// by magnitude. Bounds per scene (every
 // covered pixel, 1/255 units): p99 <= 1 for both (8-bit rounding is 0.5);
 // max <= 3 against the march (its steps cut the mesh boundary and the
 // cell-scalar jumps at +-Step/2: up to tau Step of a pixel's colour, about
@@ -16,6 +21,7 @@
 #include "PPIRayBruteForce.h"
 #include "PPIRayImageCompare.h"
 #include "PPIRayTestScenes.h"
+#include "vtkAppendFilter.h"
 #include "vtkCellData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -98,6 +104,7 @@ struct SceneCase
   std::function<void(vtkVolumeProperty*)> TransferFunction;
   std::function<void(vtkUnstructuredGridGPURayCastMapper*)> Configure;
   std::string BruteForceArray; // if the march reads another array than the mapper
+  int MaximumPeels = 0;        // if > 0, the most depth-peeling passes the geometry needs
 };
 
 // Scalars "s" = 100 Blob / 1.3 on n^3 voxels over [0, 1]^3 split into tetrahedra.
@@ -113,6 +120,73 @@ vtkSmartPointer<vtkUnstructuredGrid> Block(
 bool All(int, int, int)
 {
   return true;
+}
+
+// n^3 voxels over [0, 1]^3 split into six tetrahedra around a main diagonal,
+// the voxels with i + j + k odd mirrored in x: neighbours along y and z split
+// their shared face along different diagonals, and a flat tetrahedron of the
+// face's four corners fills the gap between the two triangulations (what
+// vtkDataSetTriangleFilter leaves between differently split hexahedra).
+vtkSmartPointer<vtkUnstructuredGrid> MismatchedVoxels(int n)
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> s;
+  s->SetName("s");
+  for (int k = 0; k <= n; ++k)
+  {
+    for (int j = 0; j <= n; ++j)
+    {
+      for (int i = 0; i <= n; ++i)
+      {
+        const double x = double(i) / n, y = double(j) / n, z = double(k) / n;
+        points->InsertNextPoint(x, y, z);
+        s->InsertNextValue(ppiray_test::Blob(x, y, z));
+      }
+    }
+  }
+  auto id = [n](int i, int j, int k) { return vtkIdType(i + (n + 1) * (j + (n + 1) * k)); };
+  auto mirrored = [](int i, int j, int k) { return (i + j + k) % 2 == 1; };
+  const int paths[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 },
+    { 2, 1, 0 } };
+  vtkNew<vtkCellArray> cells;
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const bool m = mirrored(i, j, k);
+        for (const auto& path : paths)
+        {
+          int c[3] = { m ? 1 : 0, 0, 0 };
+          vtkIdType tet[4] = { id(i + c[0], j, k), 0, 0, 0 };
+          for (int step = 0; step < 3; ++step)
+          {
+            c[path[step]] += (path[step] == 0 && m) ? -1 : 1;
+            tet[step + 1] = id(i + c[0], j + c[1], k + c[2]);
+          }
+          cells->InsertNextCell(4, tet);
+        }
+        if (j + 1 < n && m != mirrored(i, j + 1, k))
+        {
+          const vtkIdType flat[4] = { id(i, j + 1, k), id(i + 1, j + 1, k),
+            id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1) };
+          cells->InsertNextCell(4, flat);
+        }
+        if (k + 1 < n && m != mirrored(i, j, k + 1))
+        {
+          const vtkIdType flat[4] = { id(i, j, k + 1), id(i + 1, j, k + 1),
+            id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1) };
+          cells->InsertNextCell(4, flat);
+        }
+      }
+    }
+  }
+  grid->SetPoints(points);
+  grid->SetCells(VTK_TETRA, cells);
+  grid->GetPointData()->SetScalars(s);
+  return grid;
 }
 
 void CoolToWarm(vtkVolumeProperty* property, double lo, double hi, double maxOpacity)
@@ -203,6 +277,12 @@ int Run(const SceneCase& scene)
   fail(gpuMarch.P99 > 1.0 || gpuMarch.Max > 3.0, "GPU against the march");
   fail(refMarch.P99 > 1.0 || refMarch.Max > 3.0, "reference against the march");
   fail(gpuRef.P99 > 1.0 || gpuRef.Max > 2.0, "GPU against the reference");
+  if (scene.MaximumPeels > 0)
+  {
+    std::printf("%-24s peels %d (at most %d)\n", scene.Name.c_str(), mapper->GetNumberOfPeels(),
+      scene.MaximumPeels);
+    fail(mapper->GetNumberOfPeels() > scene.MaximumPeels, "more peels than the geometry needs");
+  }
   return errors;
 }
 }
@@ -278,7 +358,8 @@ int TestGPURayCastBruteForce(int, char*[])
   }
   {
     // Zero-volume tetrahedra on interior faces: a face's three corners and
-    // its centroid (a new point with the interpolated scalar).
+    // its centroid (a new point with the interpolated scalar), or, every
+    // other one, a corner twice (a collapsed cell).
     auto grid = Block(6, All);
     vtkDataArray* s = grid->GetPointData()->GetArray("s");
     const vtkIdType cells = grid->GetNumberOfCells();
@@ -299,12 +380,46 @@ int TestGPURayCastBruteForce(int, char*[])
         }
         value += s->GetComponent(id, 0) / 3;
       }
+      if (c % 2)
+      {
+        const vtkIdType collapsed[4] = { face[0], face[0], face[1], face[2] };
+        grid->InsertNextCell(VTK_TETRA, 4, collapsed);
+        continue;
+      }
       const vtkIdType m = grid->GetPoints()->InsertNextPoint(centroid);
       s->InsertNextTuple1(value);
       const vtkIdType flat[4] = { face[0], face[1], face[2], m };
       grid->InsertNextCell(VTK_TETRA, 4, flat);
     }
     scenes.push_back({ "zero-volume cells", grid, "s", false,
+      [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); }, nullptr, "", 1 });
+  }
+  scenes.push_back({ "quadrilateral slivers", MismatchedVoxels(6), "s", false,
+    [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); }, nullptr, "", 1 });
+  {
+    // A layer of inverted cells: the mesh folds back on itself.
+    auto grid = Block(6, All);
+    ppiray_test::FoldLayers(grid);
+    ppiray_test::WorldLinearField(grid);
+    scenes.push_back({ "folded layer", grid, "s", false,
+      [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); } });
+  }
+  {
+    // A second block (half the size) overlapping the first, unconnected.
+    vtkNew<vtkAppendFilter> append;
+    auto second = Block(3, All);
+    for (vtkIdType i = 0; i < second->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      second->GetPoint(i, x);
+      second->GetPoints()->SetPoint(i, 0.45 + 0.6 * x[0], 0.3 + 0.6 * x[1], 0.2 + 0.6 * x[2]);
+    }
+    append->AddInputData(Block(6, All));
+    append->AddInputData(second);
+    append->Update();
+    vtkSmartPointer<vtkUnstructuredGrid> grid = append->GetOutput();
+    ppiray_test::WorldLinearField(grid);
+    scenes.push_back({ "overlapping parts", grid, "s", false,
       [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); } });
   }
   scenes.push_back({ "scalars near 1e6", Block(6, All, 1.0, 1e6), "s", false,
