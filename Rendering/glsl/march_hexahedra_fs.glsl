@@ -18,10 +18,10 @@
 // (the convex-cell rule of the tetrahedral march). A folded entry face can be
 // the exit too (exitCandidate). Across a folded face (both cells on one side
 // of it: a tangled mesh) the ray walks backwards (through the inverted cell
-// across it, or through the inverted cell it is in), through the triangle
-// where the line enters each cell, integrating nothing, until it crosses a
-// folded face into the next forward part (the tetrahedral rule:
-// Documentation/algorithms.md).
+// across it, or through the inverted cell it is in), across each cell to
+// the face opposite the one it came in by, integrating nothing, until it
+// crosses a folded face into the next forward part; if that walk leaves the
+// mesh, the plain walk goes on from the fold (Documentation/algorithms.md).
 
 uniform samplerBuffer hexCorners;
 uniform isamplerBuffer hexNeighbors;
@@ -234,6 +234,7 @@ void main()
   vec4 color = vec4(0.0);
   float reached = t;
   bool backwards = false;
+  int foldCell = -1, foldFace = -1;
   for (int step = 0; step < maximumSteps; ++step)
   {
     if (backwards)
@@ -263,10 +264,20 @@ void main()
         }
       }
       int back = crossedFace >= 0 ? crossedFace : inFace;
+      // Across the cell: the face opposite the one the walk came in by (the
+      // next layer of a fold, also where the line enters through the side).
+      int across = entryFace >= 0 ? entryFace ^ 1 : -1;
+      back = across >= 0 && neighborThrough(cell, across) != -1 ? across : back;
       int code = back >= 0 ? neighborThrough(cell, back) : -1;
       if (code == -1)
       {
-        break;
+        // The walk back left the mesh: on from the fold instead.
+        backwards = false;
+        cell = foldCell;
+        entryFace = foldFace;
+        loadCorners(cell, p);
+        mask = texelFetch(hexNeighbors, 2 * cell + 1).z;
+        continue;
       }
       backwards = code >= -1;
       int next = neighborCell(code);
@@ -361,6 +372,8 @@ void main()
       // Out of an inverted cell into a forward one: back through this one.
       backwards = true;
       entryFace = exitFace;
+      foldCell = cell;
+      foldFace = exitFace;
       t = tExit;
       continue;
     }
@@ -368,6 +381,8 @@ void main()
     int next = neighborCell(code);
     entryFace = enteredFace(next, cell);
     cell = next;
+    foldCell = cell;
+    foldFace = entryFace;
     loadCorners(cell, p);
     mask = texelFetch(hexNeighbors, 2 * cell + 1).z;
     t = tExit;
