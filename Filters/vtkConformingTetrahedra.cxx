@@ -219,22 +219,14 @@ vtkIdType TetrahedralSplit::GetNumberOfUnsupportedCells() const
 }
 
 //------------------------------------------------------------------------------
-int TetrahedraPerCell(int linearCellType)
+void ExtractTetrahedra(vtkUnstructuredGrid* grid, std::vector<vtkIdType>& tets,
+  std::vector<vtkIdType>& cellIds, std::vector<vtkIdType>& unsupported)
 {
-  switch (linearCellType)
-  {
-    case VTK_TETRA:
-      return 1;
-    case VTK_HEXAHEDRON:
-    case VTK_VOXEL:
-      return 6;
-    case VTK_WEDGE:
-      return 3;
-    case VTK_PYRAMID:
-      return 2;
-    default:
-      return 0;
-  }
+  TetrahedralSplit split;
+  SplitIntoTetrahedra(grid, /*tetrahedraOnly=*/true, split);
+  tets = std::move(split.Tets);
+  cellIds = std::move(split.CellIds);
+  unsupported = std::move(split.Unsupported);
 }
 
 //------------------------------------------------------------------------------

@@ -91,6 +91,15 @@ struct TetrahedralSplit
 };
 
 /**
+ * The tetrahedra of `grid` as four point ids each (`tets`) and their cell ids
+ * (`cellIds`); other cell types are counted per type in `unsupported` (pairs
+ * of cell type, count), and left out (SplitIntoTetrahedra, tetrahedra only).
+ */
+PPIRAYFILTERS_EXPORT void ExtractTetrahedra(vtkUnstructuredGrid* grid,
+  std::vector<vtkIdType>& tets, std::vector<vtkIdType>& cellIds,
+  std::vector<vtkIdType>& unsupported);
+
+/**
  * The tetrahedra of `grid`: its tetrahedra as they are and, unless
  * `tetrahedraOnly`, the conforming split of its hexahedra, voxels, wedges and
  * pyramids (linear or not). Other cells are counted in Unsupported.
@@ -140,14 +149,14 @@ public:
   /** True if quadrilateral (a, b, c, d) is split along a-c, false if along b-d. */
   bool AlongFirstDiagonal(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d) const;
   /** Faces split against the smallest-id rule. */
-  vtkIdType GetNumberOfUnfoldedFaces() const { return static_cast<vtkIdType>(this->Unfolded.size()); }
+  vtkIdType GetNumberOfUnfoldedFaces() const
+  {
+    return static_cast<vtkIdType>(this->Unfolded.size());
+  }
 
 private:
   std::map<std::array<vtkIdType, 4>, std::array<vtkIdType, 2>> Unfolded; // sorted ids: diagonal
 };
-
-/** Number of tetrahedra SplitIntoTetrahedra makes of a linear cell type (0: not split). */
-PPIRAYFILTERS_EXPORT int TetrahedraPerCell(int linearCellType);
 }
 
 #endif

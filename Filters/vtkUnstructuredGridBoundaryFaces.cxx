@@ -2,6 +2,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkConformingTetrahedra.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -36,7 +37,7 @@ int vtkUnstructuredGridBoundaryFaces::RequestData(
   }
 
   std::vector<vtkIdType> tets, cellIds, unsupported;
-  vtkUnstructuredGridCellAdjacency::ExtractTetrahedra(input, tets, cellIds, unsupported);
+  ppiray::ExtractTetrahedra(input, tets, cellIds, unsupported);
   vtkIdType ignored = 0;
   for (size_t i = 1; i < unsupported.size(); i += 2)
   {

@@ -1,7 +1,6 @@
 #include "vtkUnstructuredGridCellAdjacency.h"
 
 #include "ppirayInvertedSheets.h"
-#include "vtkConformingTetrahedra.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -131,18 +130,6 @@ double vtkUnstructuredGridCellAdjacency::SignedVolume6(
   const double c[3] = { p3[0] - p0[0], p3[1] - p0[1], p3[2] - p0[2] };
   return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
     a[2] * (b[0] * c[1] - b[1] * c[0]);
-}
-
-//------------------------------------------------------------------------------
-void vtkUnstructuredGridCellAdjacency::ExtractTetrahedra(vtkUnstructuredGrid* grid,
-  std::vector<vtkIdType>& tets, std::vector<vtkIdType>& cellIds,
-  std::vector<vtkIdType>& unsupported)
-{
-  ppiray::TetrahedralSplit split;
-  ppiray::SplitIntoTetrahedra(grid, /*tetrahedraOnly=*/true, split);
-  tets = std::move(split.Tets);
-  cellIds = std::move(split.CellIds);
-  unsupported = std::move(split.Unsupported);
 }
 
 //------------------------------------------------------------------------------

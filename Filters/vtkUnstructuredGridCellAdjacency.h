@@ -38,8 +38,6 @@
 
 #include <vector> // for std::vector
 
-class vtkUnstructuredGrid;
-
 class PPIRAYFILTERS_EXPORT vtkUnstructuredGridCellAdjacency : public vtkObject
 {
 public:
@@ -53,14 +51,6 @@ public:
    * oriented tetrahedron (det[p1-p0, p2-p0, p3-p0] > 0).
    */
   static int FaceVertex(int f, int v);
-
-  /**
-   * The tetrahedra of `grid` as four point ids each (`tets`) and their cell ids
-   * (`cellIds`); other cell types are counted per type in `unsupported` (pairs
-   * of cell type, count), and left out.
-   */
-  static void ExtractTetrahedra(vtkUnstructuredGrid* grid, std::vector<vtkIdType>& tets,
-    std::vector<vtkIdType>& cellIds, std::vector<vtkIdType>& unsupported);
 
   /**
    * Six times the signed volume of the tetrahedron (p0, p1, p2, p3):

@@ -6,6 +6,7 @@
 #include "vtkContourValues.h"
 #include "vtkDataArray.h"
 #include "vtkCellType.h"
+#include "vtkConformingTetrahedra.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericCell.h"
 #include "vtkImageData.h"
@@ -371,10 +372,13 @@ double Dot(const Vec3& a, const Vec3& b)
 // interpolation spans (planar or not): with n1, n2 orthogonal to the ray,
 // A(u, v) = (P - o) . n1 = 0 and B(u, v) = (P - o) . n2 = 0 are bilinear;
 // eliminating u leaves a quadratic in v.
-void FaceCrossings(const std::vector<Vec3>& p, const Vec3& o, const Vec3& d, std::vector<double>& ts)
+void FaceCrossings(
+  const std::vector<Vec3>& p, const Vec3& o, const Vec3& d, std::vector<double>& ts)
 {
   const double eps = 1e-12;
-  auto sub = [](const Vec3& a, const Vec3& b) { return Vec3{ a[0] - b[0], a[1] - b[1], a[2] - b[2] }; };
+  auto sub = [](const Vec3& a, const Vec3& b) {
+    return Vec3{ a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+  };
   if (p.size() == 3)
   {
     const Vec3 e1 = sub(p[1], p[0]), e2 = sub(p[2], p[0]);
@@ -493,8 +497,8 @@ int InterpolatedPoints(vtkCell* cell)
 // A piece is split at most MaximumSplitDepth times; `unresolved` counts the
 // pieces accepted there without meeting the tolerance.
 constexpr int MaximumSplitDepth = 24;
-void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scalars, vtkIdType cellId,
-  const Vec3& origin, const Vec3& direction, const Vec3& centre, double tolerance,
+void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scalars,
+  vtkIdType cellId, const Vec3& origin, const Vec3& direction, const Vec3& centre, double tolerance,
   std::vector<Segment>& out, long long& unresolved)
 {
   const int n = InterpolatedPoints(cell);
@@ -665,7 +669,8 @@ IsoSurfaces BuildIsoSurfaces(vtkVolumeProperty* property, int mode, vtkLightColl
 {
   IsoSurfaces iso;
   vtkContourValues* contours = property->GetIsoSurfaceValues();
-  iso.Mode = (mode == 2 || contours->GetNumberOfContours() > 0) ? mode : 0; // 2 without values: empty
+  iso.Mode =
+    (mode == 2 || contours->GetNumberOfContours() > 0) ? mode : 0; // 2 without values: empty
   if (!iso.Mode)
   {
     return iso;
@@ -822,8 +827,9 @@ void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf,
     {
       const double v = iso.Values[i];
       const double tv = seg.S1 == seg.S0
-        ? t
-        : std::min(seg.T1, std::max(t, seg.T0 + (v - seg.S0) / (seg.S1 - seg.S0) * (seg.T1 - seg.T0)));
+                          ? t
+                          : std::min(seg.T1, std::max(t, seg.T0 + (v - seg.S0) / (seg.S1 - seg.S0) *
+                                                                    (seg.T1 - seg.T0)));
       if (iso.Mode == 1)
       {
         integrateLinear(t, tv, s, v);
@@ -927,7 +933,7 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
   const bool cellScalars = association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
 
   std::vector<vtkIdType> tets, cellIds, unsupported;
-  vtkUnstructuredGridCellAdjacency::ExtractTetrahedra(input, tets, cellIds, unsupported);
+  ppiray::ExtractTetrahedra(input, tets, cellIds, unsupported);
   // Quadratic and higher-order tetrahedra: the linear tetrahedron of their
   // corners (the first four points), as the mapper renders them.
   vtkIdType cornerTets = 0;
@@ -997,7 +1003,7 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
   TransferFunction tf;
   tf.Build(this->VolumeProperty, this->TransferFunctionTolerance);
   const IsoSurfaces iso = BuildIsoSurfaces(this->VolumeProperty,
-    this->BlendMode == ISOSURFACE ? 2 : (this->EmbedIsoSurfaces ? 1 : 0), this->Lights);
+    this->BlendMode == ISOSURFACE_BLEND ? 2 : (this->EmbedIsoSurfaces ? 1 : 0), this->Lights);
 
   // Camera: clip <-> world, with world shifted to the centre of the bounds.
   double bounds[6];

@@ -32,7 +32,7 @@
  * tetrahedra of their corners (as the mapper renders them), with a warning.
  * Other cell types are skipped with a warning.
  *
- * Isosurfaces (SetBlendMode(ISOSURFACE), or embedded in the composite
+ * Isosurfaces (SetBlendMode(ISOSURFACE_BLEND), or embedded in the composite
  * volume with EmbedIsoSurfaces): the isovalues of the property's
  * GetIsoSurfaceValues(), where the piecewise-linear scalar along the ray
  * crosses them (in a tetrahedron exactly; in a general cell within
@@ -104,15 +104,18 @@ public:
   vtkGetMacro(QuadratureTolerance, double);
   ///@}
 
-  /** Blend modes: composite (default) or isosurfaces only (the value of vtkVolumeMapper::ISOSURFACE_BLEND). */
+  /**
+   * Blend modes, with vtkVolumeMapper's names and values: composite
+   * (default) or isosurfaces only.
+   */
   enum
   {
-    COMPOSITE = 0,
-    ISOSURFACE = 5
+    COMPOSITE_BLEND = 0,
+    ISOSURFACE_BLEND = 5
   };
   vtkSetMacro(BlendMode, int);
   vtkGetMacro(BlendMode, int);
-  void SetBlendModeToIsoSurface() { this->SetBlendMode(ISOSURFACE); }
+  void SetBlendModeToIsoSurface() { this->SetBlendMode(ISOSURFACE_BLEND); }
 
   ///@{
   /** In composite mode, also draw the isosurfaces embedded in the volume (default off). */
@@ -142,7 +145,7 @@ protected:
   int ImageSize[2] = { 256, 256 };
   double TransferFunctionTolerance = 1e-5;
   double QuadratureTolerance = 1e-6;
-  int BlendMode = COMPOSITE;
+  int BlendMode = COMPOSITE_BLEND;
   vtkTypeBool EmbedIsoSurfaces = 0;
   vtkLightCollection* Lights = nullptr;
 

@@ -33,7 +33,6 @@ public:
 
   vtkTextureObject* GetTexture() { return this->Texture; }
   size_t GetBytes() const { return this->Bytes; }
-  bool IsUploaded() const { return this->Bytes > 0; }
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:

@@ -24,8 +24,9 @@ std::array<double, 4> Evaluate(vtkTransferFunctionControlPoints* cp, double s, i
   const auto& c = cp->GetColorAttenuation();
   const int n = cp->GetNumberOfControlPoints();
   const int lo = std::min(std::max(k, 0), n - 1), hi = std::min(std::max(k + 1, 0), n - 1);
-  const double w = (hi == lo || v[hi] <= v[lo]) ? 0.0
-                                                : std::min(1.0, std::max(0.0, (s - v[lo]) / (v[hi] - v[lo])));
+  const double w = (hi == lo || v[hi] <= v[lo])
+                     ? 0.0
+                     : std::min(1.0, std::max(0.0, (s - v[lo]) / (v[hi] - v[lo])));
   return { (1 - w) * c[4 * lo] + w * c[4 * hi], (1 - w) * c[4 * lo + 1] + w * c[4 * hi + 1],
     (1 - w) * c[4 * lo + 2] + w * c[4 * hi + 2], (1 - w) * c[4 * lo + 3] + w * c[4 * hi + 3] };
 }

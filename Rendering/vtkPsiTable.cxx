@@ -118,12 +118,6 @@ double vtkPsiTable::PsiOfGamma(double gammaFront, double gammaBack)
 }
 
 //------------------------------------------------------------------------------
-double vtkPsiTable::TableCoordinate(double tauD)
-{
-  return std::isinf(tauD) ? 1.0 : 1.0 - 1.0 / std::sqrt(tauD + 1.0);
-}
-
-//------------------------------------------------------------------------------
 const std::vector<float>& vtkPsiTable::GetTable(int size)
 {
   static std::mutex mutex;

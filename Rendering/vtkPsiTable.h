@@ -16,8 +16,8 @@
  * edge where bilinear lookup errs by 1e-2 at any practical size (measured in
  * TestPsiTable). The table here is indexed by u = 1 - sqrt(1 - gamma)
  * = 1 - 1 / sqrt(a + 1) instead, which turns that edge linear (Psi ~ 1 - u)
- * and keeps the gamma_f -> 1 edge smooth (Psi ~ (1 - u)^2). Psi itself is evaluated in double precision by Gauss-Legendre
- * quadrature on geometrically growing sub-intervals that follow the
+ * and keeps the gamma_f -> 1 edge smooth (Psi ~ (1 - u)^2). Psi itself is evaluated in double
+ * precision by Gauss-Legendre quadrature on geometrically growing sub-intervals that follow the
  * integrand's decay, accurate to about 1e-14 for every a, b >= 0.
  */
 #ifndef vtkPsiTable_h
@@ -45,11 +45,6 @@ public:
    * Psi(gamma_f, gamma_b) with gamma = tau D / (tau D + 1) in [0, 1].
    */
   static double PsiOfGamma(double gammaFront, double gammaBack);
-
-  /**
-   * The table coordinate of tau D: u = 1 - 1 / sqrt(tau D + 1) in [0, 1].
-   */
-  static double TableCoordinate(double tauD);
 
   /**
    * The size x size table, row-major with u_b along rows and u_f along

@@ -69,10 +69,13 @@ class vtkUnstructuredGridGPURayCastMapper::vtkInternals
 {
 public:
   // CPU caches and what they were built from.
-  vtkNew<vtkTetrahedralCellTextures> Cells;
-  vtkNew<vtkHexahedralCellTextures> Hexes;
-  bool Native = false;            // hexahedra rendered natively (Hexes), else tetrahedra (Cells)
-  bool GeometryWantsNative = false; // what the geometry cache was built for
+  vtkNew<vtkTetrahedralCellTextures> Tetrahedra;
+  vtkNew<vtkHexahedralCellTextures> Hexahedra;
+  // Whether the mesh is drawn as hexahedra without subdivision (a mesh of
+  // hexahedra and voxels only, HexahedronMode ACCURATE or FAST: Hexahedra),
+  // else as tetrahedra (its cells split conformingly: Tetrahedra).
+  bool NativeHexahedra = false;
+  bool GeometryWantsNativeHexahedra = false; // what the geometry cache was built for
   vtkNew<vtkTransferFunctionControlPoints> ControlPoints;
   vtkNew<vtkUnstructuredGrid> InputCopy; // when the input is not a vtkUnstructuredGrid
   vtkUnstructuredGridBase* GeometryInput = nullptr;
@@ -134,27 +137,34 @@ public:
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
 
   // The active cell textures' common data.
-  const double* Origin() const { return this->Native ? this->Hexes->GetOrigin() : this->Cells->GetOrigin(); }
-  double Length() const { return this->Native ? this->Hexes->GetLength() : this->Cells->GetLength(); }
+  const double* Origin() const
+  {
+    return this->NativeHexahedra ? this->Hexahedra->GetOrigin() : this->Tetrahedra->GetOrigin();
+  }
   vtkIdType NumberOfCells() const
   {
-    return this->Native ? this->Hexes->GetNumberOfHexahedra() : this->Cells->GetNumberOfTetrahedra();
+    return this->NativeHexahedra ? this->Hexahedra->GetNumberOfHexahedra()
+                        : this->Tetrahedra->GetNumberOfTetrahedra();
   }
   double MaximumCellLength() const
   {
-    return this->Native ? this->Hexes->GetMaximumCellDiameter() : this->Cells->GetMaximumEdgeLength();
+    return this->NativeHexahedra ? this->Hexahedra->GetMaximumCellDiameter()
+                        : this->Tetrahedra->GetMaximumEdgeLength();
   }
   const std::vector<float>& BoundaryPointCoordinates() const
   {
-    return this->Native ? this->Hexes->GetBoundaryPoints() : this->Cells->GetBoundaryPoints();
+    return this->NativeHexahedra ? this->Hexahedra->GetBoundaryPoints()
+                                 : this->Tetrahedra->GetBoundaryPoints();
   }
   const std::vector<unsigned int>& BoundaryTriangleIndices() const
   {
-    return this->Native ? this->Hexes->GetBoundaryTriangles() : this->Cells->GetBoundaryTriangles();
+    return this->NativeHexahedra ? this->Hexahedra->GetBoundaryTriangles()
+                                 : this->Tetrahedra->GetBoundaryTriangles();
   }
   const std::vector<int>& BoundaryFaceCodes() const
   {
-    return this->Native ? this->Hexes->GetBoundaryFaces() : this->Cells->GetBoundaryFaces();
+    return this->NativeHexahedra ? this->Hexahedra->GetBoundaryFaces()
+                                 : this->Tetrahedra->GetBoundaryFaces();
   }
 
   size_t TargetBytes() const
@@ -401,7 +411,7 @@ const char* vtkUnstructuredGridGPURayCastMapper::GetHexahedronModeAsString()
 //------------------------------------------------------------------------------
 vtkIdType vtkUnstructuredGridGPURayCastMapper::GetNumberOfHexahedra()
 {
-  return this->Internals->Native ? this->Internals->Hexes->GetNumberOfHexahedra() : 0;
+  return this->Internals->NativeHexahedra ? this->Internals->Hexahedra->GetNumberOfHexahedra() : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -413,11 +423,11 @@ double vtkUnstructuredGridGPURayCastMapper::GetPreIntegrationTableBuildTime()
 //------------------------------------------------------------------------------
 vtkIdType vtkUnstructuredGridGPURayCastMapper::GetNumberOfTetrahedra()
 {
-  if (this->Internals->Native)
+  if (this->Internals->NativeHexahedra)
   {
     return 0;
   }
-  auto& cells = *this->Internals->Cells;
+  auto& cells = *this->Internals->Tetrahedra;
   return cells.GetNumberOfTetrahedra() - cells.GetNumberOfDegenerateTetrahedra();
 }
 
@@ -455,12 +465,12 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateGeometry(vtkUnstructuredGridBase
   }
   const bool wantsNative = this->HexahedronMode != HEXAHEDRON_SUBDIVIDE;
   if (in.GeometryInput == input && sourceTime <= in.GeometryTime.GetMTime() &&
-    in.GeometryWantsNative == wantsNative)
+    in.GeometryWantsNativeHexahedra == wantsNative)
   {
     return in.GeometryValid;
   }
   in.GeometryInput = input;
-  in.GeometryWantsNative = wantsNative;
+  in.GeometryWantsNativeHexahedra = wantsNative;
   in.GeometryTime.Modified();
   in.GeometryOnGPU = false;
   in.FieldArray = nullptr; // the field follows the geometry
@@ -469,7 +479,7 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateGeometry(vtkUnstructuredGridBase
     in.InputCopy->DeepCopy(input);
     grid = in.InputCopy;
   }
-  in.Native = false;
+  in.NativeHexahedra = false;
   if (!FiniteCoordinates(grid->GetPoints()))
   {
     vtkErrorMacro("The input has infinite or NaN point coordinates; nothing is rendered.");
@@ -480,8 +490,8 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateGeometry(vtkUnstructuredGridBase
   {
     return in.GeometryValid;
   }
-  in.GeometryValid = in.Cells->BuildGeometry(grid);
-  vtkTetrahedralCellTextures& cells = *in.Cells;
+  in.GeometryValid = in.Tetrahedra->BuildGeometry(grid);
+  vtkTetrahedralCellTextures& cells = *in.Tetrahedra;
   if (cells.GetNumberOfUnsupportedCells() > 0)
   {
     vtkErrorMacro("Skipped " << cells.GetNumberOfUnsupportedCells()
@@ -532,7 +542,7 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateGeometry(vtkUnstructuredGridBase
 bool vtkUnstructuredGridGPURayCastMapper::UpdateHexahedralGeometry(vtkUnstructuredGrid* grid)
 {
   vtkInternals& in = *this->Internals;
-  vtkHexahedralCellTextures& hexes = *in.Hexes;
+  vtkHexahedralCellTextures& hexes = *in.Hexahedra;
   hexes.BuildGeometry(grid);
   if (hexes.GetNumberOfHexahedra() == 0)
   {
@@ -563,7 +573,7 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateHexahedralGeometry(vtkUnstructur
     vtkErrorMacro("Mesh too large: " << hexes.GetNumberOfHexahedra() << " hexahedra and "
                                      << hexes.GetBoundaryFaces().size()
                                      << " boundary triangles (limits 178956970 and 16777216).");
-    in.Native = true;
+    in.NativeHexahedra = true;
     in.GeometryValid = false;
     return true;
   }
@@ -584,7 +594,7 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateHexahedralGeometry(vtkUnstructur
                     << " faces join two hexahedra on the same side (inverted cells, a tangled"
                        " mesh): each stretch of a ray is integrated once.");
   }
-  in.Native = true;
+  in.NativeHexahedra = true;
   in.GeometryValid = true;
   return true;
 }
@@ -679,20 +689,20 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateField(vtkUnstructuredGridBase* i
     }
     values = in.FieldValues;
   }
-  if (in.Native)
+  if (in.NativeHexahedra)
   {
-    in.Hexes->BuildField(values, cellFlag == 1, 0);
-    if (in.Hexes->GetNumberOfNaNScalars() > 0)
+    in.Hexahedra->BuildField(values, cellFlag == 1, 0);
+    if (in.Hexahedra->GetNumberOfNaNScalars() > 0)
     {
-      vtkWarningMacro(<< in.Hexes->GetNumberOfNaNScalars()
+      vtkWarningMacro(<< in.Hexahedra->GetNumberOfNaNScalars()
                       << " hexahedra have NaN scalars; they are rendered empty.");
     }
     return true;
   }
-  in.Cells->BuildField(values, cellFlag == 1, 0);
-  if (in.Cells->GetNumberOfNaNScalars() > 0)
+  in.Tetrahedra->BuildField(values, cellFlag == 1, 0);
+  if (in.Tetrahedra->GetNumberOfNaNScalars() > 0)
   {
-    vtkWarningMacro(<< in.Cells->GetNumberOfNaNScalars()
+    vtkWarningMacro(<< in.Tetrahedra->GetNumberOfNaNScalars()
                     << " tetrahedra have NaN scalars; they are rendered empty.");
   }
   return true;
@@ -744,28 +754,29 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateTransferFunction(vtkVolumeProper
 bool vtkUnstructuredGridGPURayCastMapper::UploadToGPU(vtkOpenGLRenderWindow* context)
 {
   vtkInternals& in = *this->Internals;
-  vtkTetrahedralCellTextures& cells = *in.Cells;
-  vtkHexahedralCellTextures& hexes = *in.Hexes;
+  vtkTetrahedralCellTextures& cells = *in.Tetrahedra;
+  vtkHexahedralCellTextures& hexes = *in.Hexahedra;
   const size_t count = static_cast<size_t>(in.NumberOfCells());
   if (!in.GeometryOnGPU)
   {
     // Tetrahedra: 4 plane texels and 1 neighbour texel each; hexahedra: 6
     // corner texels and 2 neighbour texels each (the same buffer textures).
-    bool ok = in.Native
+    bool ok = in.NativeHexahedra
       ? in.Planes.Upload(context, hexes.GetCorners().data(), 6 * count, 4, VTK_FLOAT) &&
         in.Neighbors.Upload(context, hexes.GetNeighbors().data(), 2 * count, 4, VTK_INT)
       : in.Planes.Upload(context, cells.GetFacePlanes().data(), 4 * count, 4, VTK_FLOAT) &&
         in.Neighbors.Upload(context, cells.GetNeighbors().data(), count, 4, VTK_INT);
     ok = ok &&
-      in.BoundaryFaces.Upload(context, in.BoundaryFaceCodes().data(),
-        in.BoundaryFaceCodes().size(), 1, VTK_INT) &&
-      in.BoundaryPoints->Upload(in.BoundaryPointCoordinates(), vtkOpenGLBufferObject::ArrayBuffer) &&
-      in.BoundaryTriangles->Upload(
-        in.BoundaryTriangleIndices(), vtkOpenGLBufferObject::ElementArrayBuffer);
+         in.BoundaryFaces.Upload(
+           context, in.BoundaryFaceCodes().data(), in.BoundaryFaceCodes().size(), 1, VTK_INT) &&
+         in.BoundaryPoints->Upload(
+           in.BoundaryPointCoordinates(), vtkOpenGLBufferObject::ArrayBuffer) &&
+         in.BoundaryTriangles->Upload(
+           in.BoundaryTriangleIndices(), vtkOpenGLBufferObject::ElementArrayBuffer);
     if (!ok)
     {
       vtkErrorMacro("Could not upload the mesh to the GPU ("
-        << count << (in.Native ? " hexahedra)." : " tetrahedra)."));
+        << count << (in.NativeHexahedra ? " hexahedra)." : " tetrahedra)."));
       return false;
     }
     in.BoundaryBytes = sizeof(float) * in.BoundaryPointCoordinates().size() +
@@ -776,7 +787,7 @@ bool vtkUnstructuredGridGPURayCastMapper::UploadToGPU(vtkOpenGLRenderWindow* con
   }
   if (!in.FieldOnGPU)
   {
-    const bool uploaded = in.Native
+    const bool uploaded = in.NativeHexahedra
       ? in.Field.Upload(context, hexes.GetCoefficients().data(), 2 * count, 4, VTK_FLOAT)
       : in.Field.Upload(context, cells.GetField().data(), count, 4, VTK_FLOAT);
     if (!uploaded)
@@ -912,7 +923,7 @@ bool vtkUnstructuredGridGPURayCastMapper::PrepareTargets(
     cache->ReadyShaderProgram(in.EntryProgram);
   }
   const int key =
-    MarchShaderKey(this->IntegrationMode, in.Native, this->HexahedronMode, in.IsoMode);
+    MarchShaderKey(this->IntegrationMode, in.NativeHexahedra, this->HexahedronMode, in.IsoMode);
   if (!in.MarchQuad || in.MarchQuadKey != key)
   {
     if (in.MarchQuad)
@@ -920,7 +931,8 @@ bool vtkUnstructuredGridGPURayCastMapper::PrepareTargets(
       in.MarchQuad->ReleaseGraphicsResources(context);
     }
     in.MarchQuad.reset(new vtkOpenGLQuadHelper(context, nullptr,
-      MarchShader(this->IntegrationMode, in.Native, this->HexahedronMode, in.IsoMode).c_str(),
+      MarchShader(this->IntegrationMode, in.NativeHexahedra, this->HexahedronMode, in.IsoMode)
+        .c_str(),
       ""));
     in.MarchQuadKey = key;
   }
@@ -966,8 +978,9 @@ void vtkUnstructuredGridGPURayCastMapper::CopyOpaqueDepth(
   {
     format = vtkTextureObject::Float32; // no depth buffer: nothing is opaque
   }
-  if (in.OpaqueDepthFormat != format || in.OpaqueDepth->GetWidth() != static_cast<unsigned>(width) ||
-    in.OpaqueDepth->GetHeight() != static_cast<unsigned>(height))
+  if (in.OpaqueDepthFormat != format ||
+      in.OpaqueDepth->GetWidth() != static_cast<unsigned>(width) ||
+      in.OpaqueDepth->GetHeight() != static_cast<unsigned>(height))
   {
     in.OpaqueDepth->SetContext(context);
     in.OpaqueDepth->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -1064,8 +1077,8 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
     localToClip->SetElement(i, 3, origin[i]);
   }
   vtkMatrix4x4::Multiply4x4(vol->GetMatrix(), localToClip, localToClip);
-  vtkMatrix4x4* worldToClip =
-    ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1);
+  vtkMatrix4x4* worldToClip = ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+    ren->GetTiledAspectRatio(), -1, 1);
   vtkMatrix4x4::Multiply4x4(worldToClip, localToClip, localToClip);
   vtkNew<vtkMatrix4x4> clipToLocal;
   vtkMatrix4x4::Invert(localToClip, clipToLocal);
@@ -1181,7 +1194,7 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
       in.Accumulated[current], in.Exit[current] };
     std::vector<const char*> names = { "facePlanes", "neighbors", "field", "boundaryFaces",
       "controlPoints", "entryTriangle", "opaqueDepth", "previousAccumulated", "previousExit" };
-    if (in.Native)
+    if (in.NativeHexahedra)
     {
       names[0] = "hexCorners";
       names[1] = "hexNeighbors";
@@ -1203,7 +1216,8 @@ void vtkUnstructuredGridGPURayCastMapper::RenderPasses(
         static_cast<float>(in.FullTable->GetScalarSize()),
         static_cast<float>(in.FullTable->GetLengthSize()) };
       march->SetUniform2f("tableScalarRange", range);
-      march->SetUniformf("tableMaximumLength", static_cast<float>(in.FullTable->GetMaximumLength()));
+      march->SetUniformf(
+        "tableMaximumLength", static_cast<float>(in.FullTable->GetMaximumLength()));
       march->SetUniform3f("tableSize", size);
     }
     for (size_t i = 0; i < textures.size(); ++i)
@@ -1262,10 +1276,10 @@ int vtkUnstructuredGridGPURayCastMapper::IsoSurfaceMode(vtkVolumeProperty* prope
   vtkInternals& in = *this->Internals;
   const int count = property->GetIsoSurfaceValues()->GetNumberOfContours();
   std::string warning;
-  int mode = 0;
+  int mode = NO_ISOSURFACES;
   if (this->BlendMode == ISOSURFACE_BLEND)
   {
-    mode = 2;
+    mode = ISOSURFACES_ONLY;
     if (count == 0)
     {
       warning = "ISOSURFACE_BLEND without isovalues (vtkVolumeProperty::GetIsoSurfaceValues()): "
@@ -1279,7 +1293,7 @@ int vtkUnstructuredGridGPURayCastMapper::IsoSurfaceMode(vtkVolumeProperty* prope
   }
   else if (this->EmbedIsoSurfaces && count > 0)
   {
-    mode = 1;
+    mode = EMBEDDED_ISOSURFACES;
   }
   if (mode && count > MaximumIsoValues)
   {
@@ -1335,7 +1349,8 @@ void vtkUnstructuredGridGPURayCastMapper::SetIsoSurfaceUniforms(
     {
       isoColors[i][c] = static_cast<float>(rgb[c]);
     }
-    isoColors[i][3] = static_cast<float>(std::min(1.0, std::max(0.0, opacity->GetValue(values[i]))));
+    isoColors[i][3] =
+      static_cast<float>(std::min(1.0, std::max(0.0, opacity->GetValue(values[i]))));
   }
   program->SetUniformi("numberOfIsoValues", static_cast<int>(values.size()));
   program->SetUniform1fv("isoValues", MaximumIsoValues, isoValues);

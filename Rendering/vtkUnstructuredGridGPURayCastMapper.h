@@ -147,6 +147,19 @@ public:
   };
   void SetBlendModeToIsoSurface() { this->SetBlendMode(ISOSURFACE_BLEND); }
 
+  /**
+   * What a frame draws of the isosurfaces (from the blend mode,
+   * EmbedIsoSurfaces and the isovalues): none, embedded in the composite
+   * volume, or the surfaces only. The shaders' ISO_MODE and the ParaView
+   * representation's PPIRayBlendMode use these values.
+   */
+  enum
+  {
+    NO_ISOSURFACES = 0,
+    EMBEDDED_ISOSURFACES = 1,
+    ISOSURFACES_ONLY = 2
+  };
+
   ///@{
   /**
    * In COMPOSITE_BLEND, also draw the isosurfaces of the property's
@@ -300,7 +313,7 @@ protected:
   void CopyOpaqueDepth(
     vtkOpenGLRenderWindow* context, int source, int x0, int y0, int width, int height);
   void RenderPasses(vtkRenderer* ren, vtkVolume* vol, vtkOpenGLRenderWindow* context);
-  // 0: no isosurfaces; 1: embedded in the composite volume; 2: surfaces only.
+  // NO_ISOSURFACES, EMBEDDED_ISOSURFACES or ISOSURFACES_ONLY this frame.
   int IsoSurfaceMode(vtkVolumeProperty* property);
   void SetIsoSurfaceUniforms(
     vtkShaderProgram* program, vtkRenderer* ren, vtkVolume* vol, const double origin[3]);

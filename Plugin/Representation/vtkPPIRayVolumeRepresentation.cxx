@@ -177,10 +177,11 @@ void vtkPPIRayVolumeRepresentation::SetTerminationOpacity(double opacity)
 //------------------------------------------------------------------------------
 void vtkPPIRayVolumeRepresentation::SetPPIRayBlendMode(int mode)
 {
-  this->Mapper->SetBlendMode(mode == 1
-      ? static_cast<int>(vtkUnstructuredGridGPURayCastMapper::ISOSURFACE_BLEND)
-      : static_cast<int>(vtkUnstructuredGridGPURayCastMapper::COMPOSITE_BLEND));
-  this->Mapper->SetEmbedIsoSurfaces(mode == 2);
+  using Mapper = vtkUnstructuredGridGPURayCastMapper;
+  this->Mapper->SetBlendMode(mode == Mapper::ISOSURFACES_ONLY
+      ? static_cast<int>(Mapper::ISOSURFACE_BLEND)
+      : static_cast<int>(Mapper::COMPOSITE_BLEND));
+  this->Mapper->SetEmbedIsoSurfaces(mode == Mapper::EMBEDDED_ISOSURFACES);
 }
 
 //------------------------------------------------------------------------------

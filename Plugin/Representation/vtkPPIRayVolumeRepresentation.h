@@ -55,8 +55,8 @@ public:
   void SetPsiTableSize(int size);
   void SetPreIntegrationTableSize(int size);
   void SetTerminationOpacity(double opacity);
-  // 0: composite, 1: isosurfaces only (ISOSURFACE_BLEND), 2: composite with
-  // the isosurfaces embedded (EmbedIsoSurfaces).
+  // The mapper's NO_ISOSURFACES (composite), EMBEDDED_ISOSURFACES (composite
+  // with the isosurfaces embedded) or ISOSURFACES_ONLY (ISOSURFACE_BLEND).
   void SetPPIRayBlendMode(int mode);
   // The isovalues, in the volume property (vtkImageVolumeRepresentation's
   // names, so that ParaView's isovalue widgets drive them the same way).

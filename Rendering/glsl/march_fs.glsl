@@ -170,7 +170,8 @@ void main()
     n = dot(n, direction) > 0.0 ? -n : n;
     plane = vec4(n, dot(n, a));
   }
-  float t = max((plane.w - dot(plane.xyz, origin)) / min(dot(plane.xyz, direction), -1.0e-30), resume);
+  float t =
+    max((plane.w - dot(plane.xyz, origin)) / min(dot(plane.xyz, direction), -1.0e-30), resume);
   int k = -1;
   int j = -1; // isovalue interval, set at the first cell
   vec4 color = vec4(0.0);

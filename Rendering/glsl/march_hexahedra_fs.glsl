@@ -30,7 +30,8 @@ uniform samplerBuffer hexCoefficients;
 //PPIRay::MarchCommon::Impl
 
 // vtkHexahedron's faces, wound outward.
-const int FACE[24] = int[24](0, 4, 7, 3, 1, 2, 6, 5, 0, 1, 5, 4, 3, 7, 6, 2, 0, 3, 2, 1, 4, 5, 6, 7);
+const int FACE[24] =
+  int[24](0, 4, 7, 3, 1, 2, 6, 5, 0, 1, 5, 4, 3, 7, 6, 2, 0, 3, 2, 1, 4, 5, 6, 7);
 
 //PPIRay::TransferFunction::Impl
 

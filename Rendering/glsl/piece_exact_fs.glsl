@@ -4,7 +4,8 @@
 // with a = tau_f D, b = tau_b D, c = (b - a) / 2, but Psi evaluated in closed
 // form instead of read from a table (completing the square in the quadratic
 // exponent; the same derivation as Filters/vtkVolumeIntegrals.h, in float):
-//   c > 0:  Psi = sqrt(pi) / (2 sqrt(c)) [erfcx(z0) - zeta erfcx(z0 + sqrt(c))], z0 = a / (2 sqrt(c))
+//   c > 0:  Psi = sqrt(pi) / (2 sqrt(c)) [erfcx(z0) - zeta erfcx(z0 + sqrt(c))],
+//           z0 = a / (2 sqrt(c))
 //   c < 0:  Psi = [F(w0 + sqrt(-c)) - zeta F(w0)] / sqrt(-c),  w0 = b / (2 sqrt(-c)),  F Dawson's
 //   |c| < 0.05:  Psi = J0(a) - c J2(a) + c^2 / 2 J4(a)  (exp(-c u^2) to second
 //           order; error below c^3 / 42 < 3e-6),  J_n(a) = int_0^1 u^n exp(-a u) du

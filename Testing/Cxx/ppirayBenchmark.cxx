@@ -174,9 +174,10 @@ int main(int argc, char* argv[])
     }
     else
     {
-      std::cout << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]"
-                   " [--views N] [--peer-views N]"
-                   " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]\n";
+      std::cout
+        << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]"
+           " [--views N] [--peer-views N]"
+           " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]\n";
       return arg == "--help" ? 0 : 2;
     }
   }
@@ -199,11 +200,13 @@ int main(int argc, char* argv[])
       name == "ppiray-full")
     {
       vtkNew<vtkUnstructuredGridGPURayCastMapper> m;
-      m->SetIntegrationMode(name == "ppiray-exact" ? vtkUnstructuredGridGPURayCastMapper::EXACT_LINEAR
-          : name == "ppiray-average"               ? vtkUnstructuredGridGPURayCastMapper::AVERAGE_COLOR
-          : name == "ppiray-full" ? vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION
-                                  : vtkUnstructuredGridGPURayCastMapper::PARTIAL_PRE_INTEGRATION);
-      rows.push_back(Measure(std::string("PPIRay ") + m->GetIntegrationModeAsString(), m, grid, o, o.Views));
+      m->SetIntegrationMode(
+        name == "ppiray-exact"     ? vtkUnstructuredGridGPURayCastMapper::EXACT_LINEAR
+        : name == "ppiray-average" ? vtkUnstructuredGridGPURayCastMapper::AVERAGE_COLOR
+        : name == "ppiray-full"    ? vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION
+                                   : vtkUnstructuredGridGPURayCastMapper::PARTIAL_PRE_INTEGRATION);
+      rows.push_back(
+        Measure(std::string("PPIRay ") + m->GetIntegrationModeAsString(), m, grid, o, o.Views));
       if (name == "ppiray-full")
       {
         std::printf("FULL_PRE_INTEGRATION table %d^3 built in %.3f s\n",
@@ -239,7 +242,8 @@ int main(int argc, char* argv[])
       ours = r.Ms;
     }
   }
-  std::printf("\n| mapper | ms/frame (median) | frames | M tets/s | GPU B/tet | PPIRay speed-up |\n");
+  std::printf(
+    "\n| mapper | ms/frame (median) | frames | M tets/s | GPU B/tet | PPIRay speed-up |\n");
   std::printf("|---|---:|---:|---:|---:|---:|\n");
   for (const Row& r : rows)
   {

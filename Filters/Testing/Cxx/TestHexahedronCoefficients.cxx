@@ -82,8 +82,8 @@ int CheckParallelepiped(const char* name, const double m[3][3], const double t[3
     double x[3], uvw[3];
     Affine(m, t, r, x);
     vtkHexahedronCoefficients::ToFrame(frame, x, uvw);
-    worst = std::max(worst,
-      std::abs(vtkHexahedronCoefficients::EvaluateField(c, uvw) - Trilinear(Field, r[0], r[1], r[2])));
+    worst = std::max(worst, std::abs(vtkHexahedronCoefficients::EvaluateField(c, uvw) -
+                                     Trilinear(Field, r[0], r[1], r[2])));
   }
   std::cout << name << ": flags " << flags << ", worst coefficient/field error " << worst
             << ", non-planarity " << deviation << "\n";

@@ -34,7 +34,8 @@ long double Trilinear(const std::array<long double, 8>& c, const Vec& p)
 // The cubic w0 + w1 x + w2 x^2 + w3 x^3 of f(q + x r), in precision T
 // (the formula of rayCubic() in hexahedron_field_fs.glsl).
 template <typename T>
-std::array<T, 4> RayCubic(const std::array<T, 8>& c, const std::array<T, 3>& q, const std::array<T, 3>& r)
+std::array<T, 4> RayCubic(
+  const std::array<T, 8>& c, const std::array<T, 3>& q, const std::array<T, 3>& r)
 {
   const T w0 = c[0] + c[1] * q[0] + c[2] * q[1] + c[3] * q[2] + c[4] * q[0] * q[1] +
     c[5] * q[1] * q[2] + c[6] * q[0] * q[2] + c[7] * q[0] * q[1] * q[2];
@@ -92,8 +93,9 @@ int TestRayCubicPrecision(int, char*[])
     long double range = 0;
     for (int i = 0; i < 8; ++i)
     {
-      range = std::max(range, std::abs(Trilinear(c, { (long double)(i & 1), (long double)((i >> 1) & 1),
-                                                   (long double)((i >> 2) & 1) })));
+      range = std::max(range,
+        std::abs(Trilinear(
+          c, { (long double)(i & 1), (long double)((i >> 1) & 1), (long double)((i >> 2) & 1) })));
     }
     // A ray through the unit cell (frame coordinates): from a point on the
     // cube's surface in a random direction pointing inside, clipped.
@@ -128,7 +130,8 @@ int TestRayCubicPrecision(int, char*[])
       for (int s = 0; s <= 32; ++s)
       {
         const long double x = len * s / 32;
-        const long double exact = Trilinear(c, { entry[0] + x * r[0], entry[1] + x * r[1], entry[2] + x * r[2] });
+        const long double exact =
+          Trilinear(c, { entry[0] + x * r[0], entry[1] + x * r[1], entry[2] + x * r[2] });
         const double got[3] = { Horner<float>(atEntry, static_cast<float>(x)),
           Horner<float>(atEyeF, static_cast<float>(d + x)),
           Horner<double>(atEyeD, static_cast<double>(d + x)) };

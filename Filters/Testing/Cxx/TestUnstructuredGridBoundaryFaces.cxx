@@ -4,6 +4,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkConformingTetrahedra.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
@@ -130,7 +131,7 @@ int TestUnstructuredGridBoundaryFaces(int, char*[])
 
   // Adjacency is symmetric: t's neighbour through f has t as a neighbour.
   std::vector<vtkIdType> tets, ids, unsupported;
-  vtkUnstructuredGridCellAdjacency::ExtractTetrahedra(grid, tets, ids, unsupported);
+  ppiray::ExtractTetrahedra(grid, tets, ids, unsupported);
   vtkNew<vtkUnstructuredGridCellAdjacency> adjacency;
   adjacency->Build(grid->GetNumberOfPoints(), tets.data(), static_cast<vtkIdType>(ids.size()));
   const auto& neighbors = adjacency->GetNeighbors();

@@ -60,7 +60,8 @@ inline std::vector<unsigned char> DifferenceImage(
   return d;
 }
 
-inline ImageDifference Compare(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+inline ImageDifference Compare(
+  const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
 {
   ImageDifference d;
   std::vector<double> all(a.size());

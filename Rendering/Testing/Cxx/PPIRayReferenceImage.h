@@ -51,7 +51,8 @@ struct ReferenceError
 
 // `image`: a window's RGB over black (ReadRGB); `exact`: the reference
 // renderer's RGBA in [0, 1] (NaN: no reference value, skipped).
-inline ReferenceError AgainstReference(const std::vector<unsigned char>& image, vtkFloatArray* exact)
+inline ReferenceError AgainstReference(
+  const std::vector<unsigned char>& image, vtkFloatArray* exact)
 {
   std::vector<double> d;
   for (vtkIdType p = 0; p < exact->GetNumberOfTuples(); ++p)

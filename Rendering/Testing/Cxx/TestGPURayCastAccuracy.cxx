@@ -70,8 +70,10 @@ int TestGPURayCastAccuracy(int argc, char* argv[])
     ppiray_test::WritePNG(prefix + "-ppiray.png", a, 200, 200);
     ppiray_test::WritePNG(prefix + "-zsweep.png", z, 200, 200);
     ppiray_test::WritePNG(prefix + "-raycast.png", r, 200, 200);
-    ppiray_test::WritePNG(prefix + "-diff-zsweep.png", ppiray_test::DifferenceImage(a, z, 10), 200, 200);
-    ppiray_test::WritePNG(prefix + "-diff-raycast.png", ppiray_test::DifferenceImage(a, r, 10), 200, 200);
+    ppiray_test::WritePNG(
+      prefix + "-diff-zsweep.png", ppiray_test::DifferenceImage(a, z, 10), 200, 200);
+    ppiray_test::WritePNG(
+      prefix + "-diff-raycast.png", ppiray_test::DifferenceImage(a, r, 10), 200, 200);
     std::cout << label << " ours vs ZSweep:  mean " << dz.Mean << " p99 " << dz.P99 << " max "
               << dz.Max << "\n";
     std::cout << label << " ours vs RayCast: mean " << dr.Mean << " p99 " << dr.P99 << " max "

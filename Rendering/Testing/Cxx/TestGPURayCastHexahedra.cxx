@@ -56,7 +56,8 @@ namespace
 // QuadratureTolerance 1e-5 (scalar deviation from linear per piece, relative
 // to the cell's range) keeps its error far below 1/255 at a tenth of the time
 // of the default 1e-6.
-vtkSmartPointer<vtkFloatArray> Reference(ppiray_test::Scene& scene, vtkUnstructuredGrid* grid, int w, int h)
+vtkSmartPointer<vtkFloatArray> Reference(
+  ppiray_test::Scene& scene, vtkUnstructuredGrid* grid, int w, int h)
 {
   vtkNew<vtkUnstructuredGridReferenceRenderer> reference;
   reference->SetInputData(grid);
@@ -193,7 +194,8 @@ vtkIdType PointId(vtkUnstructuredGrid* grid, int i, int j, int k)
   {
     double y[3];
     grid->GetPoint(p, y);
-    if (std::abs(x[0] - y[0]) + std::abs(x[1] - y[1]) + std::abs(x[2] - y[2]) < 1e-6) // float points
+    // float points
+    if (std::abs(x[0] - y[0]) + std::abs(x[1] - y[1]) + std::abs(x[2] - y[2]) < 1e-6)
     {
       return p;
     }

@@ -345,8 +345,8 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
       lit += v > 0 ? 1 : 0;
     }
     size_t warnings = 0;
-    for (size_t at = 0; (at = messages->Warnings.find("without isovalues", at)) != std::string::npos;
-         ++at)
+    for (size_t at = 0;
+         (at = messages->Warnings.find("without isovalues", at)) != std::string::npos; ++at)
     {
       ++warnings;
     }

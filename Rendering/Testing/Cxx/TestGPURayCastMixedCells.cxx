@@ -117,7 +117,8 @@ struct MixedBlock
               }
               else // two tetrahedra per face: resolved once the ids are shuffled
               {
-                cells.push_back({ PyramidAsTetrahedra, { c[f[0]], c[f[1]], c[f[2]], c[f[3]], apex } });
+                cells.push_back(
+                  { PyramidAsTetrahedra, { c[f[0]], c[f[1]], c[f[2]], c[f[3]], apex } });
               }
             }
           }
@@ -202,8 +203,9 @@ int TestGPURayCastMixedCells(int argc, char* argv[])
   vtkNew<vtkTetrahedralCellTextures> textures;
   textures->BuildGeometry(grid);
   const vtkIdType expectedTets = N * N * (6 + 2 * 3 + 6 * 2 + 12);
-  std::cout << "cells " << grid->GetNumberOfCells() << ", split " << textures->GetNumberOfSplitCells()
-            << ", tetrahedra " << textures->GetNumberOfTetrahedra() << ", boundary triangles "
+  std::cout << "cells " << grid->GetNumberOfCells() << ", split "
+            << textures->GetNumberOfSplitCells() << ", tetrahedra "
+            << textures->GetNumberOfTetrahedra() << ", boundary triangles "
             << textures->GetBoundaryFaces().size() << ", degenerate "
             << textures->GetNumberOfDegenerateTetrahedra() << ", non-manifold "
             << textures->GetNumberOfNonManifoldFaces() << "\n";
@@ -213,7 +215,8 @@ int TestGPURayCastMixedCells(int argc, char* argv[])
     errors += Fail("unexpected number of tetrahedra or split cells");
   }
   if (textures->GetBoundaryFaces().size() != 6u * N * N * 2 ||
-    textures->GetNumberOfNonManifoldFaces() != 0 || textures->GetNumberOfDegenerateTetrahedra() != 0)
+      textures->GetNumberOfNonManifoldFaces() != 0 ||
+      textures->GetNumberOfDegenerateTetrahedra() != 0)
   {
     errors += Fail("the split does not conform: faces left unmatched inside the block");
   }
@@ -253,7 +256,8 @@ int TestGPURayCastMixedCells(int argc, char* argv[])
     ppiray_test::CheckPixels(scene.Renderer, tets, scene.Property, image, 300, 300);
   std::cout << "pixels checked " << check.Pixels << ", max difference " << check.MaxDifference
             << "/255 against the reference on the same tetrahedra\n";
-  if (check.MaxDifference > 1.0) // 8-bit rounding 0.5, float and the 0.1/255 transfer-function tolerance
+  // 8-bit rounding 0.5, float and the 0.1/255 transfer-function tolerance
+  if (check.MaxDifference > 1.0)
   {
     errors += Fail("pixels differ from the reference renderer");
   }
@@ -278,7 +282,8 @@ int TestGPURayCastMixedCells(int argc, char* argv[])
   const auto same = ppiray_test::Compare(voxelImage, hexImage);
   std::cout << "voxels: " << voxelTets << " tetrahedra, image against hexahedra max "
             << same.Max << "/255\n";
-  if (voxelTets != 6 * N * N * N || same.Max > 0 || ppiray_test::Compare(voxelImage, image).Max == 0)
+  if (voxelTets != 6 * N * N * N || same.Max > 0 ||
+      ppiray_test::Compare(voxelImage, image).Max == 0)
   {
     errors += Fail("voxels do not render as the same hexahedra");
   }

@@ -33,7 +33,8 @@ int TestGPURayCastParallel(int argc, char* argv[])
     ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property, image, 300, 300);
   std::cout << "peels " << mapper->GetNumberOfPeels() << ", pixels checked " << check.Pixels
             << ", max difference " << check.MaxDifference << "/255\n";
-  if (check.MaxDifference > 1.0) // 8-bit rounding 0.5, float and the 0.1/255 transfer-function tolerance
+  // 8-bit rounding 0.5, float and the 0.1/255 transfer-function tolerance
+  if (check.MaxDifference > 1.0)
   {
     std::cerr << "pixels differ from the exact integral by up to " << check.MaxDifference
               << "/255\n";

@@ -882,7 +882,8 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     if (mapper->GetNumberOfHexahedra() != part->GetNumberOfCells() || e.P99 > P99Bound ||
       e.P999 > P999Bound)
     {
-      errors += Fail(name + ": part not native, or p99 or p99.9 against the reference above the bound");
+      errors +=
+        Fail(name + ": part not native, or p99 or p99.9 against the reference above the bound");
     }
     // Negative control: the 5% of the cells nearest the mid-plane across the
     // view direction, a layer about one cell thick that every ray crosses.
@@ -1044,8 +1045,8 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
               << mapper->GetNumberOfPeels() << " peels, one render " << seconds << " s): p99 "
               << d.P99 << " max " << d.Max << " mean " << d.Mean << ", "
               << PixelsDiffering(native, split, 2) << " pixels more than 2/255 apart; coverage "
-              << coverage[0]
-              << " and " << coverage[1] << " pixels; whole mesh against the mesh without its flat cells: max " << f.Max
+              << coverage[0] << " and " << coverage[1]
+              << " pixels; whole mesh against the mesh without its flat cells: max " << f.Max
               << "; warnings: [" << messages->Warnings << messages->Errors << "]\n";
     // Linear depth is exact on both; 15 of 23,914 pixels differ (up to 92),
     // mostly rays the split loses (77 before the fixes for collapsed cells

@@ -37,7 +37,8 @@ int TestGPURayCastSpike(int argc, char* argv[])
   // Bound: 8-bit rounding (0.5) plus the 0.999 early termination (0.26) plus
   // the Psi table's bilinear error; 2/255 leaves room for llvmpipe's float
   // rounding while any skipped spike shows as tens of levels.
-  if (check.MaxDifference > 1.0) // 8-bit rounding 0.5, float and the 0.1/255 transfer-function tolerance
+  // 8-bit rounding 0.5, float and the 0.1/255 transfer-function tolerance
+  if (check.MaxDifference > 1.0)
   {
     std::cerr << "pixels differ from the exact integral by up to " << check.MaxDifference
               << "/255\n";

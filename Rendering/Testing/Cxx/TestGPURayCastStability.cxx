@@ -52,8 +52,8 @@ double RenderAndCheck(vtkUnstructuredGrid* grid, const View& view, const double 
     focal[i] += half * (u[i] + r[i]);
   }
   camera->SetFocalPoint(focal);
-  camera->SetPosition(
-    focal[0] - 4 * view.Direction[0], focal[1] - 4 * view.Direction[1], focal[2] - 4 * view.Direction[2]);
+  camera->SetPosition(focal[0] - 4 * view.Direction[0], focal[1] - 4 * view.Direction[1],
+    focal[2] - 4 * view.Direction[2]);
   camera->SetViewUp(view.Up);
   camera->SetClippingRange(1.0, 7.0);
   scene.Window->Render();
