@@ -340,8 +340,8 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
       const vtkIdType a = faces[i].Owner, b = faces[i + 1].Owner;
       const bool folded = OnOneSide(local, this->CornerIds.data(), a, b);
       this->NumberOfFoldedFaces += folded ? 1 : 0;
-      this->Neighbors[8 * (a / 6) + a % 6] = NeighborCode(b / 6, folded, false);
-      this->Neighbors[8 * (b / 6) + b % 6] = NeighborCode(a / 6, folded, false);
+      this->Neighbors[8 * (a / 6) + a % 6] = NeighborCode(b / 6, b % 6, folded, false);
+      this->Neighbors[8 * (b / 6) + b % 6] = NeighborCode(a / 6, a % 6, folded, false);
     }
     else
     {
@@ -362,7 +362,8 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   // is in (ppirayInvertedSheets.h).
   if (this->NumberOfFoldedFaces > 0)
   {
-    auto cellOf = [](int code) { return code < -1 ? -code - 2 : code; };
+    auto cellOf = [](int code) { return code == -1 ? -1 : (code < -1 ? -code - 2 : code) / 6; };
+    auto faceOf = [](int code) { return (code < -1 ? -code - 2 : code) % 6; };
     const std::vector<unsigned char> inverted = ppiray::InvertedSheets(
       numberOfHexahedra, 6, [&](vtkIdType h, int f) { return cellOf(this->Neighbors[8 * h + f]); },
       [&](vtkIdType h, int f) { return this->Neighbors[8 * h + f] < -1; },
@@ -375,7 +376,7 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
         const int n = cellOf(code);
         if (code < -1 && inverted[h] && !inverted[n])
         {
-          code = NeighborCode(n, true, true);
+          code = NeighborCode(n, faceOf(code), true, true);
         }
       }
     }

@@ -60,17 +60,17 @@ public:
   static constexpr float TransparentCellOffset() { return -3.0e38f; }
 
   /**
-   * Neighbour code: the hexahedron; across a folded face (both cells on one
-   * side of it) -(hexahedron + 2) if the ray walks back through the
-   * neighbour, -(hexahedron + 2 + TurnBack()) if it walks back through the
-   * cell it is in (that one is inverted, the neighbour not:
-   * ppirayInvertedSheets.h); -1 on the boundary.
+   * Neighbour code: 6 * hexahedron + its face; across a folded face (both
+   * cells on one side of it) -(code + 2) if the ray walks back through the
+   * neighbour, -(code + 2 + TurnBack()) if it walks back through the cell it
+   * is in (that one is inverted, the neighbour not: ppirayInvertedSheets.h);
+   * -1 on the boundary.
    */
   static constexpr int TurnBack() { return 1 << 29; }
-  static int NeighborCode(vtkIdType hexahedron, bool folded, bool turnBack)
+  static int NeighborCode(vtkIdType hexahedron, int face, bool folded, bool turnBack)
   {
-    const int h = static_cast<int>(hexahedron);
-    return folded ? -(h + 2 + (turnBack ? TurnBack() : 0)) : h;
+    const int code = static_cast<int>(6 * hexahedron + face);
+    return folded ? -(code + 2 + (turnBack ? TurnBack() : 0)) : code;
   }
 
   vtkIdType GetNumberOfHexahedra() const { return static_cast<vtkIdType>(this->CellIds.size()); }
@@ -85,8 +85,8 @@ public:
   /** 24 floats per hexahedron (6 RGBA texels). */
   const std::vector<float>& GetCorners() const { return this->Corners; }
   /**
-   * 8 ints per hexahedron (2 RGBA texels): 6 neighbour codes (NeighborCode()),
-   * the diagonal mask, 0.
+   * 8 ints per hexahedron (2 RGBA texels): 6 neighbour codes (NeighborCode():
+   * the neighbour and the face it is entered by), the diagonal mask, 0.
    */
   const std::vector<int>& GetNeighbors() const { return this->Neighbors; }
   /** 8 floats per hexahedron (2 RGBA texels). */

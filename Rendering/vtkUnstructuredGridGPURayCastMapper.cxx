@@ -265,11 +265,20 @@ std::string UnsupportedCellsMessage(const std::vector<vtkIdType>& unsupported)
   return message.str();
 }
 
-// Which march program: the integration mode, for native hexahedra the
-// hexahedron mode, and the isosurface mode.
-int MarchShaderKey(int mode, bool native, int hexahedronMode, int isoMode)
+// What the mesh needs of the march: flat cells to cross, folds to walk back
+// (code a clean mesh does not need is compiled out).
+struct MeshFeatures
 {
-  return mode + 4 * (native ? 1 + hexahedronMode : 0) + 16 * isoMode;
+  bool FlatCells = false;
+  bool Folds = false;
+};
+
+// Which march program: the integration mode, for native hexahedra the
+// hexahedron mode, the isosurface mode and the mesh features.
+int MarchShaderKey(int mode, bool native, int hexahedronMode, int isoMode, MeshFeatures mesh)
+{
+  return mode + 4 * (native ? 1 + hexahedronMode : 0) + 16 * isoMode +
+    64 * ((mesh.FlatCells ? 1 : 0) + (mesh.Folds ? 2 : 0));
 }
 
 constexpr int MaximumIsoValues = 16; // isosurface_fs.glsl
@@ -278,7 +287,8 @@ constexpr int MaximumLights = 8;
 // The march shader of an integration mode: the traversal (tetrahedra, or
 // hexahedra with their field along the ray and hexahedron mode) with the
 // mode's segment integral (and piece integral) substituted in.
-std::string MarchShader(int mode, bool native, int hexahedronMode, int isoMode)
+std::string MarchShader(
+  int mode, bool native, int hexahedronMode, int isoMode, MeshFeatures mesh)
 {
   std::string integrate;
   switch (mode)
@@ -305,6 +315,9 @@ std::string MarchShader(int mode, bool native, int hexahedronMode, int isoMode)
         : hexahedron_fast_fs);
   }
   vtkShaderProgram::Substitute(march, "//PPIRay::MarchCommon::Impl", march_common_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::Mesh::Features",
+    std::string("const bool FLAT_CELLS = ") + (mesh.FlatCells ? "true" : "false") +
+      ";\nconst bool FOLDS = " + (mesh.Folds ? "true" : "false") + ";");
   vtkShaderProgram::Substitute(march, "//PPIRay::TransferFunction::Impl", transfer_function_fs);
   vtkShaderProgram::Substitute(march, "//PPIRay::IsoSurface::Impl", isosurface_fs);
   vtkShaderProgram::Substitute(march, "//PPIRay::IsoSurface::Mode",
@@ -922,8 +935,12 @@ bool vtkUnstructuredGridGPURayCastMapper::PrepareTargets(
   {
     cache->ReadyShaderProgram(in.EntryProgram);
   }
-  const int key =
-    MarchShaderKey(this->IntegrationMode, in.NativeHexahedra, this->HexahedronMode, in.IsoMode);
+  MeshFeatures mesh;
+  mesh.FlatCells = !in.NativeHexahedra && in.Tetrahedra->GetNumberOfDegenerateTetrahedra() > 0;
+  mesh.Folds = in.NativeHexahedra ? in.Hexahedra->GetNumberOfFoldedFaces() > 0
+                                  : in.Tetrahedra->GetNumberOfFoldedFaces() > 0;
+  const int key = MarchShaderKey(
+    this->IntegrationMode, in.NativeHexahedra, this->HexahedronMode, in.IsoMode, mesh);
   if (!in.MarchQuad || in.MarchQuadKey != key)
   {
     if (in.MarchQuad)
@@ -931,7 +948,8 @@ bool vtkUnstructuredGridGPURayCastMapper::PrepareTargets(
       in.MarchQuad->ReleaseGraphicsResources(context);
     }
     in.MarchQuad.reset(new vtkOpenGLQuadHelper(context, nullptr,
-      MarchShader(this->IntegrationMode, in.NativeHexahedra, this->HexahedronMode, in.IsoMode)
+      MarchShader(this->IntegrationMode, in.NativeHexahedra, this->HexahedronMode, in.IsoMode,
+        mesh)
         .c_str(),
       ""));
     in.MarchQuadKey = key;

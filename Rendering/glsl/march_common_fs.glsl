@@ -6,6 +6,10 @@ uniform sampler2D opaqueDepth;
 uniform sampler2D previousAccumulated; // colour of the earlier peels
 uniform sampler2D previousExit;        // where the earlier peel stopped
 uniform int maximumSteps;
+
+// FLAT_CELLS, FOLDS: whether the mesh has flat cells to cross and folds to
+// walk back (the march leaves out what it does not need).
+//PPIRay::Mesh::Features
 uniform float terminationAlpha;
 
 in vec2 texCoord; // pixel centre in [0, 1]^2

@@ -99,23 +99,19 @@ const float FLAT_CELL = 1.0e38;
 const int TURN_BACK = 1 << 29;
 
 
-// The face of flat cell t (corners c_v, face f = the three other than c_f),
+// The face of a flat cell (corners c_v, face f = the three other than c_f),
 // other than `entryFace`, whose triangle best contains x: the largest
 // smallest barycentric coordinate of x projected on the face's plane,
 // lambda_a = m . ((b - x) x (c - x)) / |m|^2 with m = (b - a) x (c - a);
 // faces of (relatively) zero area are never taken. -1: none.
-int flatCellExit(int t, int entryFace, vec3 x)
+int flatCellExit(vec4 c[4], int entryFace, vec3 x)
 {
-  vec3 c[4];
-  for (int v = 0; v < 4; ++v)
-  {
-    c[v] = texelFetch(facePlanes, 4 * t + v).xyz;
-  }
   vec3 m[4];
   float largest = 0.0;
   for (int f = 0; f < 4; ++f)
   {
-    m[f] = cross(c[(f + 2) & 3] - c[(f + 1) & 3], c[(f + 3) & 3] - c[(f + 1) & 3]);
+    vec3 a = c[(f + 1) & 3].xyz;
+    m[f] = cross(c[(f + 2) & 3].xyz - a, c[(f + 3) & 3].xyz - a);
     largest = max(largest, dot(m[f], m[f]));
   }
   int best = -1;
@@ -127,7 +123,7 @@ int flatCellExit(int t, int entryFace, vec3 x)
     {
       continue;
     }
-    vec3 a = c[(f + 1) & 3] - x, b = c[(f + 2) & 3] - x, d = c[(f + 3) & 3] - x;
+    vec3 a = c[(f + 1) & 3].xyz - x, b = c[(f + 2) & 3].xyz - x, d = c[(f + 3) & 3].xyz - x;
     float la = dot(m[f], cross(b, d)) / area2;
     float lb = dot(m[f], cross(d, a)) / area2;
     float score = min(min(la, lb), 1.0 - la - lb);
@@ -179,62 +175,54 @@ void main()
   bool backwards = false;
   for (int step = 0; step < maximumSteps; ++step)
   {
-    int exitFace = -1;
-    if (facePlane(cell, 0).w > FLAT_CELL)
+    vec4 p[4];
+    for (int f = 0; f < 4; ++f)
     {
-      exitFace = flatCellExit(cell, entryFace, origin + t * direction);
+      p[f] = facePlane(cell, f);
     }
-    else if (backwards)
+    int exitFace = -1;
+    bool flatCell = FLAT_CELLS && p[0].w > FLAT_CELL;
+    if (flatCell)
     {
-      // The cell's stretch lies behind t: out through the face the line
-      // enters it by, the farthest plane it is heading into.
-      float tEntry = -INFINITY;
-      for (int f = 0; f < 4; ++f)
-      {
-        vec4 p = facePlane(cell, f);
-        float along = dot(p.xyz, direction);
-        float tf = (p.w - dot(p.xyz, origin)) / along;
-        if (f != entryFace && along < 0.0 && tf > tEntry)
-        {
-          tEntry = tf;
-          exitFace = f;
-        }
-      }
+      exitFace = flatCellExit(p, entryFace, origin + t * direction);
     }
     else
     {
-      float tExit = INFINITY;
+      // Forwards: out through the nearest plane the ray heads out of.
+      // Backwards (the cell's stretch lies behind t): out through the face
+      // the line enters it by, the farthest plane it heads into.
+      bool walkingBack = FOLDS && backwards;
+      float tExit = walkingBack ? -INFINITY : INFINITY;
       for (int f = 0; f < 4; ++f)
       {
-        vec4 p = facePlane(cell, f);
-        float along = dot(p.xyz, direction);
-        float tf = (p.w - dot(p.xyz, origin)) / along;
-        if (f != entryFace && along > 0.0 && tf < tExit)
+        float along = dot(p[f].xyz, direction);
+        float tf = (p[f].w - dot(p[f].xyz, origin)) / along;
+        bool better = walkingBack ? (along < 0.0 && tf > tExit) : (along > 0.0 && tf < tExit);
+        if (f != entryFace && better)
         {
           tExit = tf;
           exitFace = f;
         }
       }
-      if (exitFace < 0)
+      if (exitFace >= 0 && !walkingBack)
       {
-        break;
+        tExit = max(tExit, t);
+        float tEnd = min(tExit, tStop);
+        vec4 g = texelFetch(field, cell);
+        if (g.w > -1.0e38 && tEnd > t)
+        {
+          float sFront = dot(g.xyz, origin + t * direction) + g.w;
+          float sBack = dot(g.xyz, origin + tEnd * direction) + g.w;
+          k = integrateTetrahedronSegment(sFront, sBack, tEnd - t, g.xyz, origin + t * direction,
+            direction, k, j, color);
+        }
+        reached = max(reached, tEnd);
+        if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
+        {
+          break;
+        }
+        t = tExit;
       }
-      tExit = max(tExit, t);
-      float tEnd = min(tExit, tStop);
-      vec4 g = texelFetch(field, cell);
-      if (g.w > -1.0e38 && tEnd > t)
-      {
-        float sFront = dot(g.xyz, origin + t * direction) + g.w;
-        float sBack = dot(g.xyz, origin + tEnd * direction) + g.w;
-        k = integrateTetrahedronSegment(sFront, sBack, tEnd - t, g.xyz, origin + t * direction,
-          direction, k, j, color);
-      }
-      reached = max(reached, tEnd);
-      if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
-      {
-        break;
-      }
-      t = tExit;
     }
     if (exitFace < 0)
     {
@@ -245,9 +233,9 @@ void main()
     {
       break;
     }
-    bool folded = next < -1;
+    bool folded = FOLDS && next < -1;
     next = folded ? -next - 2 : next;
-    bool turnBack = next >= TURN_BACK;
+    bool turnBack = FOLDS && next >= TURN_BACK;
     next -= turnBack ? TURN_BACK : 0;
     if (folded && turnBack && !backwards)
     {

@@ -5,9 +5,10 @@
 //
 // Cell textures (vtkHexahedralCellTextures), in the mesh's local frame:
 //   hexCorners[6 h .. 6 h + 5]   the 8 corners, 24 floats, right-handed
-//   hexNeighbors[2 h]            cells through faces 0..3, [2 h + 1]: faces 4, 5,
-//                                the diagonal mask, 0 (-1: boundary; across a
-//                                folded face -(h' + 2), or -(h' + 2 + TURN_BACK)
+//   hexNeighbors[2 h]            6 h' + f' (the cell and face entered) through
+//                                faces 0..3, [2 h + 1]: faces 4, 5, the diagonal
+//                                mask, 0 (-1: boundary; across a folded face
+//                                -(6 h' + f' + 2), or -(6 h' + f' + 2 + TURN_BACK)
 //                                where h is the inverted side)
 //   hexCoefficients[2 h .. + 1]  c0..c7 of the field in the cell frame (c0 = -3e38: empty)
 // Each face (q0, q1, q2, q3) of vtkHexahedron is two triangles split along
@@ -150,11 +151,11 @@ int neighborThrough(int h, int f)
 
 const int TURN_BACK = 1 << 29;
 
-// The hexahedron of a neighbour code (-1: none).
-int neighborCell(int code)
+// 6 h' + f' of a neighbour code (-1: none).
+int neighborEntry(int code)
 {
-  int h = code < -1 ? -code - 2 : code;
-  return h >= TURN_BACK ? h - TURN_BACK : h;
+  int entry = code < -1 ? -code - 2 : code;
+  return entry >= TURN_BACK ? entry - TURN_BACK : entry;
 }
 
 // Whether the ray reaches triangle v (corner indices into p) at parameter tf:
@@ -190,16 +191,6 @@ void trianglePlaneCrossing(vec3 p[8], ivec3 v, vec3 origin, vec3 direction, out 
 bool exitCandidate(int f, int entryFace, float tf, float t)
 {
   return f != entryFace || tf > t + 1.0e-5 * abs(t);
-}
-
-// The face of hexahedron h whose neighbour is `from`.
-int enteredFace(int h, int from)
-{
-  ivec4 n0 = texelFetch(hexNeighbors, 2 * h);
-  ivec4 n1 = texelFetch(hexNeighbors, 2 * h + 1);
-  return neighborCell(n0.x) == from ? 0 : neighborCell(n0.y) == from ? 1
-    : neighborCell(n0.z) == from ? 2 : neighborCell(n0.w) == from ? 3
-    : neighborCell(n1.x) == from ? 4 : neighborCell(n1.y) == from ? 5 : -1;
 }
 
 void main()
@@ -238,61 +229,14 @@ void main()
   int foldCell = -1, foldFace = -1;
   for (int step = 0; step < maximumSteps; ++step)
   {
-    if (backwards)
-    {
-      // Out through the triangle the line enters the cell by: the farthest
-      // one it crosses heading in (else the farthest plane heading in).
-      float tIn = -INFINITY, tCrossed = -INFINITY;
-      int inFace = -1, crossedFace = -1;
-      for (int f = 0; f < 6; ++f)
-      {
-        for (int side = 0; side < 2; ++side)
-        {
-          ivec3 v = faceTriangle(f, side, mask);
-          float along, tf;
-          trianglePlaneCrossing(p, v, origin, direction, along, tf);
-          if (f != entryFace && along < 0.0 && tf > tIn)
-          {
-            tIn = tf;
-            inFace = f;
-          }
-          if (f != entryFace && along < 0.0 && tf > tCrossed &&
-            crossesTriangle(p, v, origin, direction, tf))
-          {
-            tCrossed = tf;
-            crossedFace = f;
-          }
-        }
-      }
-      int back = crossedFace >= 0 ? crossedFace : inFace;
-      // Across the cell: the face opposite the one the walk came in by (the
-      // next layer of a fold, also where the line enters through the side).
-      int across = entryFace >= 0 ? entryFace ^ 1 : -1;
-      back = across >= 0 && neighborThrough(cell, across) != -1 ? across : back;
-      int code = back >= 0 ? neighborThrough(cell, back) : -1;
-      if (code == -1)
-      {
-        // The walk back left the mesh: on from the fold instead.
-        backwards = false;
-        cell = foldCell;
-        entryFace = foldFace;
-        loadCorners(cell, p);
-        mask = texelFetch(hexNeighbors, 2 * cell + 1).z;
-        continue;
-      }
-      backwards = code >= -1;
-      int next = neighborCell(code);
-      entryFace = enteredFace(next, cell);
-      cell = next;
-      loadCorners(cell, p);
-      mask = texelFetch(hexNeighbors, 2 * cell + 1).z;
-      continue;
-    }
     // Exit: the nearest face plane the ray heads out of (the convex-cell
     // rule), accepted if the ray crosses that triangle; else (a concave fold
-    // of a non-planar face) the nearest triangle actually crossed.
-    float tPlane = INFINITY;
-    int planeFace = -1, planeSide = 0;
+    // of a non-planar face) the nearest triangle actually crossed. Walking
+    // back: the face opposite the one the walk came in by (the next layer of
+    // a fold, also where the line entered the cell through the side), else
+    // the farthest plane the ray heads into.
+    float tPlane = INFINITY, tIn = -INFINITY;
+    int planeFace = -1, planeSide = 0, inFace = -1;
     for (int f = 0; f < 6; ++f)
     {
       for (int side = 0; side < 2; ++side)
@@ -306,87 +250,115 @@ void main()
           planeFace = f;
           planeSide = side;
         }
-      }
-    }
-    float tHit = INFINITY;
-    int hitFace = -1;
-    if (planeFace >= 0 && tPlane >= t - 1.0e-6 * abs(t) &&
-      crossesTriangle(p, faceTriangle(planeFace, planeSide, mask), origin, direction, tPlane))
-    {
-      tHit = tPlane;
-      hitFace = planeFace;
-    }
-    for (int f = 0; f < 6 && hitFace < 0; ++f)
-    {
-      for (int side = 0; side < 2; ++side)
-      {
-        ivec3 v = faceTriangle(f, side, mask);
-        float along, tf;
-        trianglePlaneCrossing(p, v, origin, direction, along, tf);
-        if (along > 0.0 && tf < tHit && tf >= t - 1.0e-6 * abs(t) &&
-          exitCandidate(f, entryFace, tf, t) &&
-          crossesTriangle(p, v, origin, direction, tf))
+        if (FOLDS && f != entryFace && along < 0.0 && tf > tIn)
         {
-          tHit = tf;
-          hitFace = f;
+          tIn = tf;
+          inFace = f;
         }
       }
     }
-    int exitFace = hitFace >= 0 ? hitFace : planeFace;
-    float tExit = hitFace >= 0 ? tHit : tPlane;
-    if (exitFace < 0)
+    int exitFace = -1;
+    float tExit = t;
+    if (FOLDS && backwards)
     {
-      break;
+      int across = entryFace >= 0 ? entryFace ^ 1 : -1;
+      exitFace = across >= 0 && neighborThrough(cell, across) != -1 ? across : inFace;
     }
-    tExit = max(tExit, t);
-    float tEnd = min(tExit, tStop);
-    reached = tEnd;
-    vec4 c0 = texelFetch(hexCoefficients, 2 * cell);
-    if (c0.x > -1.0e38 && tEnd > t)
+    else
     {
-      mat3 frame = mat3(p[1] - p[0], p[3] - p[0], p[4] - p[0]);
-      float det = determinant(frame);
-      float scale = length(frame[0]) * length(frame[1]) * length(frame[2]);
-      if (abs(det) > 1.0e-6 * scale)
+      float tHit = INFINITY;
+      int hitFace = -1;
+      if (planeFace >= 0 && tPlane >= t - 1.0e-6 * abs(t) &&
+        crossesTriangle(p, faceTriangle(planeFace, planeSide, mask), origin, direction, tPlane))
       {
-        mat3 toFrame = inverse(frame);
-        vec3 entry = origin + t * direction;
-        vec3 q = toFrame * (entry - p[0]);
-        vec3 r = toFrame * direction;
-        vec4 c1 = texelFetch(hexCoefficients, 2 * cell + 1);
-        vec4 w = rayCubic(c0, c1, q, r);
-        k = integrateHexahedronSegment(w, tEnd - t, c0, c1, q, r, toFrame, entry, direction, k, j,
-          color);
+        tHit = tPlane;
+        hitFace = planeFace;
+      }
+      for (int f = 0; f < 6 && hitFace < 0; ++f)
+      {
+        for (int side = 0; side < 2; ++side)
+        {
+          ivec3 v = faceTriangle(f, side, mask);
+          float along, tf;
+          trianglePlaneCrossing(p, v, origin, direction, along, tf);
+          if (along > 0.0 && tf < tHit && tf >= t - 1.0e-6 * abs(t) &&
+            exitCandidate(f, entryFace, tf, t) && crossesTriangle(p, v, origin, direction, tf))
+          {
+            tHit = tf;
+            hitFace = f;
+          }
+        }
+      }
+      exitFace = hitFace >= 0 ? hitFace : planeFace;
+      tExit = hitFace >= 0 ? tHit : tPlane;
+      if (exitFace < 0)
+      {
+        break;
+      }
+      tExit = max(tExit, t);
+      float tEnd = min(tExit, tStop);
+      reached = tEnd;
+      vec4 c0 = texelFetch(hexCoefficients, 2 * cell);
+      if (c0.x > -1.0e38 && tEnd > t)
+      {
+        mat3 frame = mat3(p[1] - p[0], p[3] - p[0], p[4] - p[0]);
+        float det = determinant(frame);
+        float scale = length(frame[0]) * length(frame[1]) * length(frame[2]);
+        if (abs(det) > 1.0e-6 * scale)
+        {
+          mat3 toFrame = inverse(frame);
+          vec3 entry = origin + t * direction;
+          vec3 q = toFrame * (entry - p[0]);
+          vec3 r = toFrame * direction;
+          vec4 c1 = texelFetch(hexCoefficients, 2 * cell + 1);
+          vec4 w = rayCubic(c0, c1, q, r);
+          k = integrateHexahedronSegment(w, tEnd - t, c0, c1, q, r, toFrame, entry, direction, k,
+            j, color);
+        }
+      }
+      if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
+      {
+        break;
       }
     }
-    if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
+    int code = exitFace >= 0 ? neighborThrough(cell, exitFace) : -1;
+    if (code == -1 && !(FOLDS && backwards))
     {
       break;
     }
-    int code = neighborThrough(cell, exitFace);
+    // The next cell and the face it is entered by.
+    bool walkingBack = backwards;
+    int next = neighborEntry(code);
+    int nextCell = next / 6, nextFace = next - 6 * nextCell;
     if (code == -1)
     {
-      break;
+      // The walk back left the mesh: on from the fold instead.
+      nextCell = foldCell;
+      nextFace = foldFace;
+      backwards = false;
     }
-    if (code < -1 - TURN_BACK)
+    else if (FOLDS && !backwards && code < -1 - TURN_BACK)
     {
       // Out of an inverted cell into a forward one: back through this one.
+      nextCell = cell;
+      nextFace = exitFace;
       backwards = true;
-      entryFace = exitFace;
-      foldCell = cell;
-      foldFace = exitFace;
-      t = tExit;
-      continue;
     }
-    backwards = code < -1;
-    int next = neighborCell(code);
-    entryFace = enteredFace(next, cell);
-    cell = next;
-    foldCell = cell;
-    foldFace = entryFace;
+    else
+    {
+      backwards = FOLDS && (backwards != (code < -1));
+    }
+    if (!walkingBack)
+    {
+      // Where a walk back that starts here goes on from if it fails.
+      foldCell = nextCell;
+      foldFace = nextFace;
+    }
+    t = tExit;
+    cell = nextCell;
+    entryFace = nextFace;
     loadCorners(cell, p);
     mask = texelFetch(hexNeighbors, 2 * cell + 1).z;
-    t = tExit;
   }
   fragOutput0 = before + (1.0 - before.a) * color;
   fragOutput1 = vec4(reached);

@@ -128,17 +128,14 @@ int TestHexahedralCellTextures(int, char*[])
   {
     for (int f = 0; f < 6; ++f)
     {
-      const int other = nb[8 * h + f];
-      if (other < 0)
+      // Neighbour codes 6 h' + f' point back at 6 h + f (none folded here).
+      const int code = nb[8 * h + f];
+      if (code == -1)
       {
         continue;
       }
-      int back = -1;
-      for (int g = 0; g < 6; ++g)
-      {
-        back = nb[8 * other + g] == h ? g : back;
-      }
-      if (back < 0)
+      const int other = code / 6, back = code % 6;
+      if (code < -1 || nb[8 * other + back] != 6 * h + f)
       {
         ++asymmetric;
         continue;
