@@ -1,6 +1,6 @@
 #include "vtkHexahedronCoefficients.h"
 
-#include "vtkConformingTetrahedra.h"
+#include "ppirayConformingTetrahedra.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"

@@ -1,7 +1,7 @@
 #include "vtkTetrahedralCellTextures.h"
 
-#include "vtkConformingTetrahedra.h"
-#include "vtkMeshLocalFrame.h"
+#include "ppirayConformingTetrahedra.h"
+#include "ppirayMeshLocalFrame.h"
 
 #include "vtkDataArray.h"
 #include "vtkNew.h"

@@ -45,7 +45,7 @@ public:
    * Planes, neighbours and boundary of the tetrahedra of `grid`: its
    * tetrahedra, and its hexahedra, voxels, wedges and pyramids (linear, or
    * quadratic through their corners) split into tetrahedra that conform
-   * across shared faces (vtkConformingTetrahedra.h). Other cell types are
+   * across shared faces (ppirayConformingTetrahedra.h). Other cell types are
    * left out and counted (GetUnsupportedCellTypes()). Returns false when no
    * tetrahedron is left.
    */

@@ -2,7 +2,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkConformingTetrahedra.h"
+#include "ppirayConformingTetrahedra.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"

@@ -6,7 +6,7 @@
 #include "vtkContourValues.h"
 #include "vtkDataArray.h"
 #include "vtkCellType.h"
-#include "vtkConformingTetrahedra.h"
+#include "ppirayConformingTetrahedra.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericCell.h"
 #include "vtkImageData.h"
@@ -23,7 +23,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridCellAdjacency.h"
-#include "vtkVolumeIntegrals.h"
+#include "ppirayVolumeIntegrals.h"
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>

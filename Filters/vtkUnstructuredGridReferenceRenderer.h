@@ -14,7 +14,7 @@
  * cell (barycentric coordinates, no adjacency: non-convex meshes, holes and
  * separate parts need nothing special), splits them at every colour and
  * opacity node value, and integrates each piece in closed form
- * (vtkVolumeIntegrals.h). The transfer function is VTK's own evaluation
+ * (ppirayVolumeIntegrals.h). The transfer function is VTK's own evaluation
  * (vtkColorTransferFunction::GetTable, vtkPiecewiseFunction::GetValue), split
  * between nodes by bisection until linear within TransferFunctionTolerance.
  * No early termination. Deterministic; OpenMP over screen tiles.

@@ -104,7 +104,7 @@ public:
    *   monotonic piece integrated as linear by the integration mode
    *   (Miranda 2011, Ch. 4);
    * - HEXAHEDRON_SUBDIVIDE: split into 6 tetrahedra that conform across
-   *   shared faces (vtkConformingTetrahedra.h).
+   *   shared faces (ppirayConformingTetrahedra.h).
    * Default HEXAHEDRON_ACCURATE: exact to the transfer function like the
    * tetrahedral path (Documentation/results.md: on llvmpipe it takes about
    * twice the time of SUBDIVIDE, with a tenth of its error and 160 instead of

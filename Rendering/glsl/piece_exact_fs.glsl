@@ -3,7 +3,7 @@
 //   I = C_f (1 - Psi) + C_b (Psi - zeta),  zeta = exp(-(a + b) / 2),
 // with a = tau_f D, b = tau_b D, c = (b - a) / 2, but Psi evaluated in closed
 // form instead of read from a table (completing the square in the quadratic
-// exponent; the same derivation as Filters/vtkVolumeIntegrals.h, in float):
+// exponent; the same derivation as Filters/ppirayVolumeIntegrals.h, in float):
 //   c > 0:  Psi = sqrt(pi) / (2 sqrt(c)) [erfcx(z0) - zeta erfcx(z0 + sqrt(c))],
 //           z0 = a / (2 sqrt(c))
 //   c < 0:  Psi = [F(w0 + sqrt(-c)) - zeta F(w0)] / sqrt(-c),  w0 = b / (2 sqrt(-c)),  F Dawson's

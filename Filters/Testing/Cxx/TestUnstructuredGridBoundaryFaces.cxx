@@ -4,7 +4,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkConformingTetrahedra.h"
+#include "ppirayConformingTetrahedra.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"

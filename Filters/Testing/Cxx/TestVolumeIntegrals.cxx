@@ -6,7 +6,7 @@
 //    composite Gauss-Legendre quadrature (two points on each of 5e5
 //    sub-intervals): agreement to 1e-9.
 
-#include "vtkVolumeIntegrals.h"
+#include "ppirayVolumeIntegrals.h"
 
 #include <cmath>
 #include <algorithm>

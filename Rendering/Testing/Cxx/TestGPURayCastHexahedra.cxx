@@ -32,7 +32,7 @@
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkColorTransferFunction.h"
-#include "vtkConformingTetrahedra.h"
+#include "ppirayConformingTetrahedra.h"
 #include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"

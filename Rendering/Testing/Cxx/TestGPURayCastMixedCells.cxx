@@ -18,7 +18,7 @@
 #include "PPIRayTestScenes.h"
 #include "vtkAppendFilter.h"
 #include "vtkCellType.h"
-#include "vtkConformingTetrahedra.h"
+#include "ppirayConformingTetrahedra.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "PPIRayBaseline.h"

@@ -3,12 +3,12 @@
 //  - a = b:  Psi = (1 - exp(-a)) / a
 //  - a = 0:  Psi = sqrt(pi / (2 b)) erf(sqrt(b / 2))
 //  - general a, b: midpoint rule with 2e5 samples, and the reference
-//    renderer's closed form (erfcx / Dawson, Filters/vtkVolumeIntegrals.h) to 1e-12
+//    renderer's closed form (erfcx / Dawson, Filters/ppirayVolumeIntegrals.h) to 1e-12
 //  - table of size N, bilinear as the GPU samples it: max error over a 4x finer
 //    grid, must be below the bound documented for the default size (512).
 
 #include "vtkPsiTable.h"
-#include "vtkVolumeIntegrals.h"
+#include "ppirayVolumeIntegrals.h"
 
 #include <cmath>
 #include <cstdio>

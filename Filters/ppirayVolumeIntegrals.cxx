@@ -1,4 +1,4 @@
-#include "vtkVolumeIntegrals.h"
+#include "ppirayVolumeIntegrals.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "vtkMeshLocalFrame.h"
+#include "ppirayMeshLocalFrame.h"
 
 #include "vtkPoints.h"
 

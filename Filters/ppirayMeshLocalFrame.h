@@ -1,13 +1,13 @@
 /**
- * @file   vtkMeshLocalFrame.h
+ * @file   ppirayMeshLocalFrame.h
  * @brief  a mesh's points relative to the centre of its bounds
  *
  * Cell textures store coordinates relative to the centre of the mesh's
  * bounds (differences taken in double, stored in float), so that a mesh far
  * from the origin keeps single-precision accuracy on the GPU.
  */
-#ifndef vtkMeshLocalFrame_h
-#define vtkMeshLocalFrame_h
+#ifndef ppirayMeshLocalFrame_h
+#define ppirayMeshLocalFrame_h
 
 #include "ppirayFiltersModule.h" // for export macro
 

@@ -1,5 +1,5 @@
 /**
- * @file   vtkVolumeIntegrals.h
+ * @file   ppirayVolumeIntegrals.h
  * @brief  closed-form integrals of the emission-absorption model, in double
  *
  * For a ray piece of length D on which colour C and attenuation tau are linear
@@ -21,8 +21,8 @@
  * Used by the CPU reference renderer; deliberately shares nothing with the
  * GPU path (which tabulates Psi by quadrature), so that each checks the other.
  */
-#ifndef vtkVolumeIntegrals_h
-#define vtkVolumeIntegrals_h
+#ifndef ppirayVolumeIntegrals_h
+#define ppirayVolumeIntegrals_h
 
 #include "ppirayFiltersModule.h" // for export macro
 

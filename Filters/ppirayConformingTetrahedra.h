@@ -1,5 +1,5 @@
 /**
- * @file   vtkConformingTetrahedra.h
+ * @file   ppirayConformingTetrahedra.h
  * @brief  linear 3D cells split into tetrahedra that conform across shared faces
  *
  * Every quadrilateral face is split along the diagonal through its smallest
@@ -24,8 +24,8 @@
  *
  * Quadratic and higher-order cells are split through their linear corners.
  */
-#ifndef vtkConformingTetrahedra_h
-#define vtkConformingTetrahedra_h
+#ifndef ppirayConformingTetrahedra_h
+#define ppirayConformingTetrahedra_h
 
 #include "ppirayFiltersModule.h" // for export macro
 #include "vtkCellArray.h"              // for ForEachCell

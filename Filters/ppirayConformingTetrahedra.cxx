@@ -1,4 +1,4 @@
-#include "vtkConformingTetrahedra.h"
+#include "ppirayConformingTetrahedra.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
