@@ -69,12 +69,23 @@ std::vector<unsigned char> InvertedSheets(vtkIdType numberOfCells, int facesPerC
       }
     }
   }
-  std::vector<unsigned char> inverted(numberOfCells);
+  std::vector<unsigned char> inverted(static_cast<size_t>(numberOfCells));
   for (vtkIdType c = 0; c < numberOfCells; ++c)
   {
     inverted[c] = orientation[c] < 0 ? 1 : 0;
   }
   return inverted;
+}
+
+/**
+ * At a folded face from `cell` into `neighbor`: whether the ray walks back
+ * through the cell it is in (it is inverted, the neighbour is not) rather
+ * than through the neighbour.
+ */
+inline bool WalksBackInPlace(const std::vector<unsigned char>& inverted, vtkIdType cell,
+  vtkIdType neighbor)
+{
+  return inverted[cell] && !inverted[neighbor];
 }
 }
 

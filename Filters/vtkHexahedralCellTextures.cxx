@@ -374,7 +374,7 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
       {
         int& code = this->Neighbors[8 * h + f];
         const int n = cellOf(code);
-        if (code < -1 && inverted[h] && !inverted[n])
+        if (code < -1 && ppiray::WalksBackInPlace(inverted, h, n))
         {
           code = NeighborCode(n, faceOf(code), true, true);
         }

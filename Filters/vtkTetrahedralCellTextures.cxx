@@ -165,8 +165,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     const bool folded = neighbors[k] >= 0 && adjacency->IsFolded(t, k % 4);
     this->Neighbors[k] = neighbors[k] < 0 ? NoNeighbor()
                                           : NeighborCode(neighbors[k], neighborFaces[k], folded,
-                                              folded && adjacency->IsInverted(t) &&
-                                                !adjacency->IsInverted(neighbors[k]));
+                                              folded && adjacency->WalksBackInPlace(t, neighbors[k]));
   }
 
   // Boundary triangles wound outward, over a compact set of points.

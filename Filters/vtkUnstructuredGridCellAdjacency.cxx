@@ -234,7 +234,7 @@ void vtkUnstructuredGridCellAdjacency::Build(vtkIdType numberOfPoints, const vtk
     }
   }
   this->NumberOfNonManifoldFaces = nonManifold.load();
-  this->NumberOfFoldedFaces = folded.load();
+  this->NumberOfFoldedFaces = folded.load() / 2; // each counted from both sides
 
   // Which side of each fold is inverted.
   if (points)
@@ -270,6 +270,12 @@ void vtkUnstructuredGridCellAdjacency::Build(vtkIdType numberOfPoints, const vtk
     }
   }
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkUnstructuredGridCellAdjacency::WalksBackInPlace(vtkIdType t, vtkIdType n) const
+{
+  return ppiray::WalksBackInPlace(this->Inverted, t, n);
 }
 
 //------------------------------------------------------------------------------

@@ -91,6 +91,12 @@ public:
   bool IsInverted(vtkIdType t) const { return this->Inverted[t] != 0; }
 
   /**
+   * At a folded face from tetrahedron t into n: whether the ray walks back
+   * through t (ppiray::WalksBackInPlace).
+   */
+  bool WalksBackInPlace(vtkIdType t, vtkIdType n) const;
+
+  /**
    * Boundary faces as pairs (tetrahedron, local face), in tetrahedron order.
    */
   const std::vector<vtkIdType>& GetBoundaryFaces() const { return this->BoundaryFaces; }
@@ -106,7 +112,7 @@ public:
    */
   vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
 
-  /** Tetrahedron faces paired with a neighbour on the same side (folded). */
+  /** Folded faces: pairs of tetrahedron faces whose cells lie on one side. */
   vtkGetMacro(NumberOfFoldedFaces, vtkIdType);
 
 protected:

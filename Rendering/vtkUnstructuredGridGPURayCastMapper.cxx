@@ -544,7 +544,7 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateGeometry(vtkUnstructuredGridBase
   }
   if (cells.GetNumberOfFoldedFaces() > 0)
   {
-    vtkWarningMacro(<< cells.GetNumberOfFoldedFaces() / 2
+    vtkWarningMacro(<< cells.GetNumberOfFoldedFaces()
                     << " faces join two tetrahedra on the same side (inverted cells, a tangled"
                        " mesh): each stretch of a ray is integrated once.");
   }
