@@ -162,10 +162,10 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   for (size_t k = 0; k < neighbors.size(); ++k)
   {
     const vtkIdType t = static_cast<vtkIdType>(k / 4);
-    const bool folded = neighbors[k] >= 0 && adjacency->IsFolded(t, k % 4);
-    this->Neighbors[k] = neighbors[k] < 0 ? NoNeighbor()
-                                          : NeighborCode(neighbors[k], neighborFaces[k], folded,
-                                              folded && adjacency->WalksBackInPlace(t, neighbors[k]));
+    const vtkIdType n = neighbors[k];
+    const bool folded = n >= 0 && adjacency->IsFolded(t, k % 4);
+    const bool inPlace = folded && adjacency->WalksBackInPlace(t, n);
+    this->Neighbors[k] = n < 0 ? NoNeighbor() : NeighborCode(n, neighborFaces[k], folded, inPlace);
   }
 
   // Boundary triangles wound outward, over a compact set of points.
