@@ -1,5 +1,7 @@
 #include "ppirayVolumeIntegrals.h"
 
+#include "ppirayNumerics.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -45,57 +47,6 @@ void MomentsOfExponential(double a, double (&j)[N])
 
 namespace ppiray
 {
-//------------------------------------------------------------------------------
-// erfcx(x) = exp(x^2) erfc(x): direct below 26 (erfc keeps its relative
-// accuracy there), else the asymptotic series 1/(x sqrt(pi)) sum (-1)^n (2n-1)!! / (2x^2)^n.
-double Erfcx(double x)
-{
-  if (x < 26.0)
-  {
-    return std::exp(x * x) * std::erfc(x);
-  }
-  const double r = 1.0 / (2.0 * x * x);
-  double term = 1.0, sum = 1.0;
-  for (int n = 1; n < 8; ++n)
-  {
-    term *= -(2.0 * n - 1.0) * r;
-    sum += term;
-  }
-  return sum / (x * SqrtPi);
-}
-
-//------------------------------------------------------------------------------
-// Dawson F(x) = (sqrt(pi) / 2) exp(-x^2) erfi(x), with the all-positive series
-// erfi(x) = (2 / sqrt(pi)) sum x^(2n+1) / (n! (2n + 1)) below 20 (no
-// cancellation; exp(x^2) < 1e174), else F ~ 1/(2x) sum (2n-1)!! / (2x^2)^n.
-double Dawson(double x)
-{
-  if (x < 20.0)
-  {
-    const double x2 = x * x;
-    double power = x, sum = 0.0;
-    for (int n = 0; n < 2000; ++n)
-    {
-      const double term = power / (2.0 * n + 1.0);
-      sum += term;
-      if (term < 1e-17 * sum)
-      {
-        break;
-      }
-      power *= x2 / (n + 1.0);
-    }
-    return std::exp(-x2) * sum;
-  }
-  const double r = 1.0 / (2.0 * x * x);
-  double term = 1.0, sum = 1.0;
-  for (int n = 1; n < 10; ++n)
-  {
-    term *= (2.0 * n - 1.0) * r;
-    sum += term;
-  }
-  return sum / (2.0 * x);
-}
-
 //------------------------------------------------------------------------------
 double PsiClosedForm(double a, double b)
 {

@@ -25,15 +25,10 @@
 #define ppirayVolumeIntegrals_h
 
 #include "ppirayFiltersModule.h" // for export macro
+#include "ppirayNumerics.h"      // for Erfcx, Dawson
 
 namespace ppiray
 {
-/** exp(x^2) erfc(x) for x >= 0 (bounded by 1, ~ 1 / (x sqrt(pi)) for large x). */
-PPIRAYFILTERS_EXPORT double Erfcx(double x);
-
-/** Dawson's function F(x) = exp(-x^2) int_0^x exp(t^2) dt for x >= 0. */
-PPIRAYFILTERS_EXPORT double Dawson(double x);
-
 /** Psi(a, b) above for a, b >= 0 (infinite arguments allowed). */
 PPIRAYFILTERS_EXPORT double PsiClosedForm(double a, double b);
 

@@ -124,8 +124,20 @@ public:
   vtkGetMacro(NumberOfOtherCells, vtkIdType);
   vtkGetMacro(NumberOfQuadraticCells, vtkIdType);
 
-  /** Bytes of the per-hexahedron arrays (corners, neighbours, coefficients). */
-  static constexpr int BytesPerHexahedron() { return 160; }
+  ///@{
+  /**
+   * The layout: texels (4 values each) per hexahedron in GetCorners(),
+   * GetNeighbors() and GetCoefficients(), read by the GPU march with these
+   * counts (vtkPPIRayHexahedralCellBuffers).
+   */
+  static constexpr int CornerTexels() { return 6; }
+  static constexpr int NeighborTexels() { return 2; }
+  static constexpr int CoefficientTexels() { return 2; }
+  static constexpr int BytesPerHexahedron()
+  {
+    return 16 * (CornerTexels() + NeighborTexels() + CoefficientTexels());
+  }
+  ///@}
 
   /** Corner v (0..2) of triangle t (0, 1) of face f, given the face's diagonal bit. */
   static int TriangleCorner(int f, int t, int v, bool secondDiagonal);

@@ -1,6 +1,7 @@
 #include "vtkHexahedronCoefficients.h"
 
 #include "ppirayConformingTetrahedra.h"
+#include "ppirayNumerics.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -49,48 +50,6 @@ double FaceNonPlanarity(const double* q0, const double* q1, const double* q2, co
     return 0.0; // degenerate face: reported as a collapsed edge instead
   }
   return std::abs(vtkMath::Dot(e, n)) / area / length;
-}
-
-// Solves the 4x4 system A x = r in place by Gaussian elimination with partial
-// pivoting; false if a pivot is below `smallest`.
-bool SolveLinear4(double a[4][4], double r[4], double smallest)
-{
-  for (int col = 0; col < 4; ++col)
-  {
-    int pivot = col;
-    for (int row = col + 1; row < 4; ++row)
-    {
-      if (std::abs(a[row][col]) > std::abs(a[pivot][col]))
-      {
-        pivot = row;
-      }
-    }
-    if (!(std::abs(a[pivot][col]) > smallest))
-    {
-      return false;
-    }
-    std::swap(a[col], a[pivot]);
-    std::swap(r[col], r[pivot]);
-    for (int row = col + 1; row < 4; ++row)
-    {
-      const double factor = a[row][col] / a[col][col];
-      for (int k = col; k < 4; ++k)
-      {
-        a[row][k] -= factor * a[col][k];
-      }
-      r[row] -= factor * r[col];
-    }
-  }
-  for (int row = 3; row >= 0; --row)
-  {
-    double sum = r[row];
-    for (int k = row + 1; k < 4; ++k)
-    {
-      sum -= a[row][k] * r[k];
-    }
-    r[row] = sum / a[row][row];
-  }
-  return true;
 }
 
 // The isoparametric coefficients of a parallelepiped (corners at the unit cube's).
@@ -177,7 +136,7 @@ bool vtkHexahedronCoefficients::FitCoefficients(
     a[row][3] = u * v * w;
     r[row] = s[others[row]] - (c[0] + c[1] * u + c[2] * v + c[3] * w);
   }
-  if (!SolveLinear4(a, r, 1e-10))
+  if (!ppiray::SolveLinear4(a, r, 1e-10))
   {
     return false;
   }

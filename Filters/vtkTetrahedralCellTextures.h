@@ -126,8 +126,20 @@ public:
   /** Pairs (VTK cell type, count) of the cells left out. */
   const std::vector<vtkIdType>& GetUnsupportedCellTypes() const { return this->Unsupported; }
 
-  /** Bytes of the per-tetrahedron arrays (planes, neighbours, field). */
-  static constexpr int BytesPerTetrahedron() { return 96; }
+  ///@{
+  /**
+   * The layout: texels (4 values each) per tetrahedron in GetFacePlanes(),
+   * GetNeighbors() and GetField(), read by the GPU march with these counts
+   * (vtkPPIRayTetrahedralCellBuffers); bytes of the three arrays.
+   */
+  static constexpr int FacePlaneTexels() { return 4; }
+  static constexpr int NeighborTexels() { return 1; }
+  static constexpr int FieldTexels() { return 1; }
+  static constexpr int BytesPerTetrahedron()
+  {
+    return 16 * (FacePlaneTexels() + NeighborTexels() + FieldTexels());
+  }
+  ///@}
 
 protected:
   vtkTetrahedralCellTextures() = default;

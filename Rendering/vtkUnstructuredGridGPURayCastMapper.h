@@ -23,7 +23,8 @@
  * Caches, each rebuilt for one reason (counted, see Get*UploadCount()):
  * geometry (planes, neighbours, boundary) when points or cells change; the
  * field when the scalars change; the transfer function when the volume
- * property changes; the Psi table once.
+ * property changes; the Psi table once. The mapper coordinates collaborators
+ * that each own one concept and its GL objects (Documentation/architecture.md).
  *
  * Supported today: tetrahedra, hexahedra (natively or split, see
  * SetHexahedronMode()), voxels, wedges and pyramids (split into conforming
@@ -40,11 +41,8 @@
 #include <memory> // for std::unique_ptr
 
 class vtkOpenGLRenderWindow;
-class vtkShaderProgram;
 class vtkRenderer;
-class vtkUnstructuredGrid;
 class vtkUnstructuredGridBase;
-class vtkVolumeProperty;
 class vtkVolume;
 class vtkWindow;
 
@@ -269,9 +267,9 @@ public:
    * How many times each cache was (re)built and uploaded: lets tests assert
    * that a transfer function edit did not re-upload the geometry.
    */
-  vtkGetMacro(GeometryUploadCount, int);
-  vtkGetMacro(FieldUploadCount, int);
-  vtkGetMacro(TransferFunctionUploadCount, int);
+  int GetGeometryUploadCount();
+  int GetFieldUploadCount();
+  int GetTransferFunctionUploadCount();
   ///@}
 
   /**
@@ -297,26 +295,13 @@ protected:
   int PreIntegrationTableSize = 64;
   double TerminationOpacity = 0.999;
   int NumberOfPeels = 0;
-  int GeometryUploadCount = 0;
-  int FieldUploadCount = 0;
-  int TransferFunctionUploadCount = 0;
 
-  // Stages of Render(), each refreshing one cache when its source changed.
-  bool UpdateGeometry(vtkUnstructuredGridBase* input);
+  // Stages of Render(), each refreshing a collaborator when its source
+  // changed: the cells (tetrahedra or hexahedra), the scalar field in them,
+  // the integration mode's tables.
+  bool UpdateCells(vtkUnstructuredGridBase* input, vtkOpenGLRenderWindow* context);
   bool UpdateField(vtkUnstructuredGridBase* input);
-  // Native hexahedra when the mesh has only hexahedra; false to split instead.
-  bool UpdateHexahedralGeometry(vtkUnstructuredGrid* grid);
-  bool UpdateTransferFunction(vtkVolumeProperty* property);
-  bool UploadToGPU(vtkOpenGLRenderWindow* context);
-  bool UploadPreIntegrationTable(vtkOpenGLRenderWindow* context);
-  bool PrepareTargets(vtkOpenGLRenderWindow* context, int width, int height);
-  void CopyOpaqueDepth(
-    vtkOpenGLRenderWindow* context, int source, int x0, int y0, int width, int height);
-  void RenderPasses(vtkRenderer* ren, vtkVolume* vol, vtkOpenGLRenderWindow* context);
-  // NO_ISOSURFACES, EMBEDDED_ISOSURFACES or ISOSURFACES_ONLY this frame.
-  int IsoSurfaceMode(vtkVolumeProperty* property);
-  void SetIsoSurfaceUniforms(
-    vtkShaderProgram* program, vtkRenderer* ren, vtkVolume* vol, const double origin[3]);
+  bool UpdateIntegrator(vtkOpenGLRenderWindow* context);
 
 private:
   vtkUnstructuredGridGPURayCastMapper(const vtkUnstructuredGridGPURayCastMapper&) = delete;

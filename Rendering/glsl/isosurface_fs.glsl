@@ -1,18 +1,17 @@
 // Isosurfaces (vtkVolumeProperty::GetIsoSurfaceValues()): found exactly
 // inside each cell by the march (a linear root in a tetrahedron, a cubic root
 // in a hexahedron), shaded with the renderer's lights, composited front to
-// back. ISO_MODE (substituted by the mapper): 0 none; 1 embedded in the
-// composite volume (Weiler et al. 2003, Fig. 1 left); 2 surfaces only
-// (VTK's ISOSURFACE_BLEND).
+// back. ISO_MODE: 0 none; 1 embedded in the composite volume (Weiler et al.
+// 2003, Fig. 1 left); 2 surfaces only (VTK's ISOSURFACE_BLEND);
+// MAXIMUM_ISO_VALUES, MAXIMUM_LIGHTS: sizes of the uniform arrays (ISO_MODE
+// and both written by vtkPPIRayIsoSurfaceUniforms).
 //
 // Which side of the surfaces a ray is on is carried along it as an index j =
 // the number of isovalues <= s (like the control interval k): a surface is
 // crossed exactly when j changes, also where the scalar jumps between cells
 // (cell data), so a surface through a shared face is counted once.
-//PPIRay::IsoSurface::Mode
+//PPIRay::IsoSurface::Dec
 
-const int MAXIMUM_ISO_VALUES = 16;
-const int MAXIMUM_LIGHTS = 8;
 uniform int numberOfIsoValues;
 uniform float isoValues[MAXIMUM_ISO_VALUES]; // ascending
 uniform vec4 isoColors[MAXIMUM_ISO_VALUES];  // colour and opacity at the isovalue

@@ -7,9 +7,12 @@ uniform sampler2D previousAccumulated; // colour of the earlier peels
 uniform sampler2D previousExit;        // where the earlier peel stopped
 uniform int maximumSteps;
 
-// FLAT_CELLS, FOLDS: whether the mesh has flat cells to cross and folds to
-// walk back (the march leaves out what it does not need).
-//PPIRay::Mesh::Features
+// The cell layout: GEOMETRY_TEXELS, NEIGHBOR_TEXELS, FIELD_TEXELS per cell,
+// neighbour code = FACES cell + face, TURN_BACK, the FLAT_CELL and EMPTY_CELL
+// thresholds (written by vtkPPIRayCellBuffers); FLAT_CELLS, FOLDS: whether the
+// mesh has flat cells to cross and folds to walk back (the march leaves out
+// what it does not need).
+//PPIRay::Cells::Dec
 uniform float terminationAlpha;
 
 in vec2 texCoord; // pixel centre in [0, 1]^2

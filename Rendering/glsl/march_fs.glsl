@@ -92,11 +92,8 @@ int integrateTetrahedronSegment(float sFront, float sBack, float len, vec3 g, ve
 // Plane of face f of cell t.
 vec4 facePlane(int t, int f)
 {
-  return texelFetch(facePlanes, 4 * t + f);
+  return texelFetch(facePlanes, GEOMETRY_TEXELS * t + f);
 }
-
-const float FLAT_CELL = 1.0e38;
-const int TURN_BACK = 1 << 29;
 
 
 // The face of a flat cell (corners c_v, face f = the three other than c_f),
@@ -154,8 +151,8 @@ void main()
   // Opaque geometry stops the ray at its depth.
   float tStop = opaqueStop(opaqueDepth, pixel, ndc, origin, direction);
 
-  int cell = cellFace / 4;
-  int entryFace = cellFace - 4 * cell;
+  int cell = cellFace / FACES;
+  int entryFace = cellFace - FACES * cell;
   vec4 plane = facePlane(cell, entryFace);
   if (plane.w > FLAT_CELL)
   {
@@ -208,8 +205,8 @@ void main()
       {
         tExit = max(tExit, t);
         float tEnd = min(tExit, tStop);
-        vec4 g = texelFetch(field, cell);
-        if (g.w > -1.0e38 && tEnd > t)
+        vec4 g = texelFetch(field, FIELD_TEXELS * cell);
+        if (g.w > EMPTY_CELL && tEnd > t)
         {
           float sFront = dot(g.xyz, origin + t * direction) + g.w;
           float sBack = dot(g.xyz, origin + tEnd * direction) + g.w;
@@ -228,7 +225,7 @@ void main()
     {
       break;
     }
-    int next = texelFetch(neighbors, cell)[exitFace];
+    int next = texelFetch(neighbors, NEIGHBOR_TEXELS * cell)[exitFace];
     if (next == -1)
     {
       break;
@@ -245,8 +242,8 @@ void main()
       continue;
     }
     backwards = backwards != folded;
-    cell = next / 4;
-    entryFace = next - 4 * cell;
+    cell = next / FACES;
+    entryFace = next - FACES * cell;
   }
   fragOutput0 = before + (1.0 - before.a) * color;
   fragOutput1 = vec4(reached);

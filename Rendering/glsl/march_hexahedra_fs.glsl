@@ -113,12 +113,12 @@ int integrateHexahedronSegment(vec4 w, float len, vec4 c, vec4 d, vec3 q, vec3 r
 
 void loadCorners(int h, out vec3 p[8])
 {
-  vec4 t0 = texelFetch(hexCorners, 6 * h);
-  vec4 t1 = texelFetch(hexCorners, 6 * h + 1);
-  vec4 t2 = texelFetch(hexCorners, 6 * h + 2);
-  vec4 t3 = texelFetch(hexCorners, 6 * h + 3);
-  vec4 t4 = texelFetch(hexCorners, 6 * h + 4);
-  vec4 t5 = texelFetch(hexCorners, 6 * h + 5);
+  vec4 t0 = texelFetch(hexCorners, GEOMETRY_TEXELS * h);
+  vec4 t1 = texelFetch(hexCorners, GEOMETRY_TEXELS * h + 1);
+  vec4 t2 = texelFetch(hexCorners, GEOMETRY_TEXELS * h + 2);
+  vec4 t3 = texelFetch(hexCorners, GEOMETRY_TEXELS * h + 3);
+  vec4 t4 = texelFetch(hexCorners, GEOMETRY_TEXELS * h + 4);
+  vec4 t5 = texelFetch(hexCorners, GEOMETRY_TEXELS * h + 5);
   p[0] = t0.xyz;
   p[1] = vec3(t0.w, t1.xy);
   p[2] = vec3(t1.zw, t2.x);
@@ -144,12 +144,10 @@ ivec3 faceTriangle(int f, int t, int mask)
 // The neighbour code through face f of hexahedron h.
 int neighborThrough(int h, int f)
 {
-  ivec4 n = texelFetch(hexNeighbors, 2 * h + f / 4);
+  ivec4 n = texelFetch(hexNeighbors, NEIGHBOR_TEXELS * h + f / 4);
   int i = f - 4 * (f / 4);
   return i == 0 ? n.x : (i == 1 ? n.y : (i == 2 ? n.z : n.w));
 }
-
-const int TURN_BACK = 1 << 29;
 
 // 6 h' + f' of a neighbour code (-1: none).
 int neighborEntry(int code)
@@ -198,14 +196,14 @@ void main()
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 before;
   float resume;
-  int code = enterPeel(pixel, before, resume); // 12 h + 2 f + t
+  int code = enterPeel(pixel, before, resume); // 2 (FACES h + f) + t
   if (code < 0)
   {
     return;
   }
-  int cell = code / 12;
-  int entryFace = (code - 12 * cell) / 2;
-  int entryHalf = code - 12 * cell - 2 * entryFace;
+  int cell = code / (2 * FACES);
+  int entryFace = (code - 2 * FACES * cell) / 2;
+  int entryHalf = code - 2 * FACES * cell - 2 * entryFace;
 
   vec2 ndc = 2.0 * texCoord - 1.0;
   vec3 origin, direction;
@@ -216,7 +214,7 @@ void main()
 
   vec3 p[8];
   loadCorners(cell, p);
-  int mask = texelFetch(hexNeighbors, 2 * cell + 1).z;
+  int mask = texelFetch(hexNeighbors, NEIGHBOR_TEXELS * cell + 1).z;
   ivec3 tri = faceTriangle(entryFace, entryHalf, mask);
   vec3 n0 = cross(p[tri.y] - p[tri.x], p[tri.z] - p[tri.x]);
   float t = max(dot(n0, p[tri.x] - origin) / min(dot(n0, direction), -1.0e-30), resume);
@@ -298,8 +296,8 @@ void main()
       tExit = max(tExit, t);
       float tEnd = min(tExit, tStop);
       reached = tEnd;
-      vec4 c0 = texelFetch(hexCoefficients, 2 * cell);
-      if (c0.x > -1.0e38 && tEnd > t)
+      vec4 c0 = texelFetch(hexCoefficients, FIELD_TEXELS * cell);
+      if (c0.x > EMPTY_CELL && tEnd > t)
       {
         mat3 frame = mat3(p[1] - p[0], p[3] - p[0], p[4] - p[0]);
         float det = determinant(frame);
@@ -310,7 +308,7 @@ void main()
           vec3 entry = origin + t * direction;
           vec3 q = toFrame * (entry - p[0]);
           vec3 r = toFrame * direction;
-          vec4 c1 = texelFetch(hexCoefficients, 2 * cell + 1);
+          vec4 c1 = texelFetch(hexCoefficients, FIELD_TEXELS * cell + 1);
           vec4 w = rayCubic(c0, c1, q, r);
           k = integrateHexahedronSegment(w, tEnd - t, c0, c1, q, r, toFrame, entry, direction, k,
             j, color);
@@ -329,7 +327,7 @@ void main()
     // The next cell and the face it is entered by.
     bool walkingBack = backwards;
     int next = neighborEntry(code);
-    int nextCell = next / 6, nextFace = next - 6 * nextCell;
+    int nextCell = next / FACES, nextFace = next - FACES * nextCell;
     if (code == -1)
     {
       // The walk back left the mesh: on from the fold instead.
@@ -358,7 +356,7 @@ void main()
     cell = nextCell;
     entryFace = nextFace;
     loadCorners(cell, p);
-    mask = texelFetch(hexNeighbors, 2 * cell + 1).z;
+    mask = texelFetch(hexNeighbors, NEIGHBOR_TEXELS * cell + 1).z;
   }
   fragOutput0 = before + (1.0 - before.a) * color;
   fragOutput1 = vec4(reached);

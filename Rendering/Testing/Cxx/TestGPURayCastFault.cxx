@@ -106,7 +106,7 @@ int TestGPURayCastFault(int argc, char* argv[])
   const auto reference = ppiray_test::ReferenceRGB(
     grid, scene.Property, scene.Renderer->GetActiveCamera(), size, size, 1e-4);
   // Native, split (linear in each of 6 tetrahedra per cell: measured p99 4, max 7;
-  // native p99 1, max 2; before the fix both p99 56-58, max 92-94).
+  // native p99 1, max 2).
   const double p99Bound[2] = { 1.5, 6.0 };
   const double maxBound[2] = { 6.0, 12.0 };
   for (int mode = 0; mode < 2; ++mode)

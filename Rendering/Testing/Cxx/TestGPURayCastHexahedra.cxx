@@ -362,15 +362,13 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
 
   // 3b. A pyramid written as a hexahedron the way UNISIM-II's pinch-outs are:
   // left-handed (corners 0-3 = 0, 1, 2 and the apex, 4-7 = 0, 1, 2, 3 the
-  // base), so that corners 0 and 6, where the handedness used to be
-  // measured, have no frame; and its slanted face (0, 1, 2, apex) has its
+  // base), so that corners 0 and 6 have no frame; and its slanted face
+  // (0, 1, 2, apex) has its
   // smallest id at 0, so the min-id split 0-2 would fold the triangle
   // (0, 1, 2) into the base. Alone, and under a right-handed hexahedron that
   // shares the slanted face (together the box [0, 1]^2 x [0, 1.5]). A
   // constant scalar makes the image depend on the traversal only (opacity by
-  // path length), exactly as the split into tetrahedra draws it. Measured
-  // before the two fixes: inside out (max 149 with the cell above), folded
-  // (half the pyramid missing alone).
+  // path length), exactly as the split into tetrahedra draws it.
   for (int cells = 1; cells <= 2; ++cells)
   {
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
@@ -414,8 +412,6 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
   // back down through the other, so the upper cell is left through its entry
   // face. Cell scalars (0 below: faint red, 1 above: dense green) show which
   // cell a stretch is charged to; the split into tetrahedra charges it right.
-  // Measured before the other half of the entry face could be an exit: max
-  // 119/255 on 75 pixels (UNISIM-II's thin layers lost rays this way).
   {
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     vtkNew<vtkPoints> points;

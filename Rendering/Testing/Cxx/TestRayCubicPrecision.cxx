@@ -13,12 +13,36 @@
 // per case; requires single precision at the entry point within 2e-6 (a few
 // float ulps: no cancellation) and shows that at the eye it is not.
 
+#include "PPIRayGLSL.h"
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
 #include <vector>
+
+#define out
+namespace glsl32
+{
+PPIRAY_GLSL_SCALAR_BUILTINS(float)
+using vec3 = glm::vec3;
+using vec4 = glm::vec4;
+#include "hexahedron_field_fs.glsl"
+}
+#define float double
+namespace glsl64
+{
+PPIRAY_GLSL_SCALAR_BUILTINS(double)
+using vec3 = glm::dvec3;
+using vec4 = glm::dvec4;
+#include "hexahedron_field_fs.glsl"
+}
+#undef float
+#undef out
 
 namespace
 {
@@ -31,27 +55,16 @@ long double Trilinear(const std::array<long double, 8>& c, const Vec& p)
     c[5] * p[1] * p[2] + c[6] * p[0] * p[2] + c[7] * p[0] * p[1] * p[2];
 }
 
-// The cubic w0 + w1 x + w2 x^2 + w3 x^3 of f(q + x r), in precision T
-// (the formula of rayCubic() in hexahedron_field_fs.glsl).
-template <typename T>
-std::array<T, 4> RayCubic(
-  const std::array<T, 8>& c, const std::array<T, 3>& q, const std::array<T, 3>& r)
+// The cubic of f(q + x r) and its value, by the shader's own rayCubic() and
+// cubicValue() (hexahedron_field_fs.glsl compiled as C++ through GLM, in
+// float as on the GPU and in double).
+template <typename Vec4, typename Vec3, typename Coefficients, typename Point>
+Vec4 RayCubic(const Coefficients& c, const Point& q, const Point& r,
+  Vec4 (*rayCubic)(Vec4, Vec4, Vec3, Vec3))
 {
-  const T w0 = c[0] + c[1] * q[0] + c[2] * q[1] + c[3] * q[2] + c[4] * q[0] * q[1] +
-    c[5] * q[1] * q[2] + c[6] * q[0] * q[2] + c[7] * q[0] * q[1] * q[2];
-  const T w1 = c[1] * r[0] + c[2] * r[1] + c[3] * r[2] + c[4] * (q[0] * r[1] + r[0] * q[1]) +
-    c[5] * (q[1] * r[2] + r[1] * q[2]) + c[6] * (q[0] * r[2] + r[0] * q[2]) +
-    c[7] * (r[0] * q[1] * q[2] + q[0] * r[1] * q[2] + q[0] * q[1] * r[2]);
-  const T w2 = c[4] * r[0] * r[1] + c[5] * r[1] * r[2] + c[6] * r[0] * r[2] +
-    c[7] * (r[0] * r[1] * q[2] + r[0] * q[1] * r[2] + q[0] * r[1] * r[2]);
-  const T w3 = c[7] * r[0] * r[1] * r[2];
-  return { w0, w1, w2, w3 };
-}
-
-template <typename T>
-T Horner(const std::array<T, 4>& w, T x)
-{
-  return w[0] + x * (w[1] + x * (w[2] + x * w[3]));
+  return rayCubic(
+    Vec4(c[0], c[1], c[2], c[3]), Vec4(c[4], c[5], c[6], c[7]), Vec3(q[0], q[1], q[2]),
+    Vec3(r[0], r[1], r[2]));
 }
 
 template <typename T, size_t N>
@@ -124,17 +137,20 @@ int TestRayCubicPrecision(int, char*[])
     {
       const long double d = distances[k];
       const Vec eye = { entry[0] - d * r[0], entry[1] - d * r[1], entry[2] - d * r[2] };
-      const auto atEntry = RayCubic<float>(Cast<float>(c), Cast<float>(entry), Cast<float>(r));
-      const auto atEyeF = RayCubic<float>(Cast<float>(c), Cast<float>(eye), Cast<float>(r));
-      const auto atEyeD = RayCubic<double>(Cast<double>(c), Cast<double>(eye), Cast<double>(r));
+      const glm::vec4 atEntry = RayCubic(
+        Cast<float>(c), Cast<float>(entry), Cast<float>(r), &glsl32::rayCubic);
+      const glm::vec4 atEyeF =
+        RayCubic(Cast<float>(c), Cast<float>(eye), Cast<float>(r), &glsl32::rayCubic);
+      const glm::dvec4 atEyeD =
+        RayCubic(Cast<double>(c), Cast<double>(eye), Cast<double>(r), &glsl64::rayCubic);
       for (int s = 0; s <= 32; ++s)
       {
         const long double x = len * s / 32;
         const long double exact =
           Trilinear(c, { entry[0] + x * r[0], entry[1] + x * r[1], entry[2] + x * r[2] });
-        const double got[3] = { Horner<float>(atEntry, static_cast<float>(x)),
-          Horner<float>(atEyeF, static_cast<float>(d + x)),
-          Horner<double>(atEyeD, static_cast<double>(d + x)) };
+        const double got[3] = { glsl32::cubicValue(atEntry, static_cast<float>(x)),
+          glsl32::cubicValue(atEyeF, static_cast<float>(d + x)),
+          glsl64::cubicValue(atEyeD, static_cast<double>(d + x)) };
         for (int m = 0; m < 3; ++m)
         {
           stats[k][m].Errors.push_back(static_cast<double>(std::abs(got[m] - exact) / range));

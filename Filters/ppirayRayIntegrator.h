@@ -1,0 +1,37 @@
+/**
+ * @file   ppirayRayIntegrator.h
+ * @brief  the reference renderer's integral along one ray
+ *
+ * For vtkUnstructuredGridReferenceRenderer only: the closed-form integrals
+ * of ppirayVolumeIntegrals.h over the ray's segments (ppirayRaySegments.h),
+ * split at the transfer function's breaks (ppirayReferenceTransferFunction.h),
+ * with the isosurfaces of ppirayIsoSurfaces.h.
+ */
+#ifndef ppirayRayIntegrator_h
+#define ppirayRayIntegrator_h
+
+#include "ppirayIsoSurfaces.h"               // for ppiray::IsoSurfaces
+#include "ppirayRaySegments.h"               // for Segment, Vec3
+#include "ppirayReferenceTransferFunction.h" // for TransferFunction
+
+#include <functional> // for std::function
+
+namespace ppiray
+{
+namespace reference
+{
+/** The field gradient of general cell `cell` at ray parameter t. */
+using GradientAt = std::function<Vec3(vtkIdType cell, double t)>;
+
+// Front-to-back composite of the sorted, de-overlapped segments, each split
+// at every transfer-function break and integrated in closed form; with
+// isosurfaces, also split where the scalar crosses an isovalue (and at jumps
+// between cells), the surface composited there. `gradientAt(cell, t)`: the
+// field gradient of a general cell at ray parameter t.
+void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf,
+  const IsoSurfaces& iso, const Vec3& origin, const Vec3& direction, const Vec3& centre,
+  const GradientAt& gradientAt, float rgba[4]);
+}
+}
+
+#endif

@@ -1,0 +1,285 @@
+#include "ppirayRaySegments.h"
+
+#include "ppirayNumerics.h"
+#include "vtkCell.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkGenericCell.h"
+#include "vtkPoints.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ppiray
+{
+namespace reference
+{
+namespace
+{
+// Ray parameters t where origin + t direction crosses a cell face: a triangle
+// (Moller-Trumbore), or a quadrilateral as the bilinear patch
+// P(u, v) = (1-u)(1-v) p0 + u (1-v) p1 + u v p2 + (1-u) v p3 that the cell's
+// interpolation spans (planar or not): with n1, n2 orthogonal to the ray,
+// A(u, v) = (P - o) . n1 = 0 and B(u, v) = (P - o) . n2 = 0 are bilinear;
+// eliminating u leaves a quadratic in v.
+void FaceCrossings(
+  const std::vector<Vec3>& p, const Vec3& o, const Vec3& d, std::vector<double>& ts)
+{
+  const double eps = 1e-12;
+  if (p.size() == 3)
+  {
+    const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
+    const Vec3 h = glm::cross(d, e2);
+    const double a = glm::dot(e1, h);
+    if (std::abs(a) < 1e-300)
+    {
+      return;
+    }
+    const Vec3 s = o - p[0];
+    const double u = glm::dot(s, h) / a;
+    const Vec3 q = glm::cross(s, e1);
+    const double v = glm::dot(d, q) / a;
+    if (u >= -eps && v >= -eps && u + v <= 1 + eps)
+    {
+      ts.push_back(glm::dot(e2, q) / a);
+    }
+    return;
+  }
+  // Two unit vectors orthogonal to d.
+  const Vec3 axis = std::abs(d[0]) < 0.6 ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 };
+  const Vec3 n1 = glm::normalize(glm::cross(d, axis));
+  const Vec3 n2 = glm::cross(d, n1);
+  double a[4], b[4];
+  for (int i = 0; i < 4; ++i)
+  {
+    const Vec3 r = p[i] - o;
+    a[i] = glm::dot(r, n1);
+    b[i] = glm::dot(r, n2);
+  }
+  // A = A0 + Au u + Av v + Auv u v, likewise B.
+  const double A0 = a[0], Au = a[1] - a[0], Av = a[3] - a[0], Auv = a[0] - a[1] + a[2] - a[3];
+  const double B0 = b[0], Bu = b[1] - b[0], Bv = b[3] - b[0], Buv = b[0] - b[1] + b[2] - b[3];
+  const double c2 = Bv * Auv - Av * Buv;
+  const double c1 = B0 * Auv + Bv * Au - A0 * Buv - Av * Bu;
+  const double c0 = B0 * Au - A0 * Bu;
+  double roots[2];
+  const int count = ppiray::QuadraticRoots(c2, c1, c0, roots);
+  for (int k = 0; k < count; ++k)
+  {
+    const double v = roots[k];
+    if (v < -eps || v > 1 + eps)
+    {
+      continue;
+    }
+    const double da = Au + Auv * v, db = Bu + Buv * v;
+    const double u = std::abs(da) > std::abs(db) ? -(A0 + Av * v) / da : -(B0 + Bv * v) / db;
+    if (!(u >= -eps && u <= 1 + eps))
+    {
+      continue;
+    }
+    const Vec3 point =
+      (1 - u) * (1 - v) * p[0] + u * (1 - v) * p[1] + u * v * p[2] + (1 - u) * v * p[3];
+    ts.push_back(glm::dot(point - o, d));
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+bool InvertEdges(const double p[4][3], double inverse[3][3])
+{
+  const double e[3][3] = { { p[1][0] - p[0][0], p[2][0] - p[0][0], p[3][0] - p[0][0] },
+    { p[1][1] - p[0][1], p[2][1] - p[0][1], p[3][1] - p[0][1] },
+    { p[1][2] - p[0][2], p[2][2] - p[0][2], p[3][2] - p[0][2] } };
+  const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+    e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+    e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+  double scale = 0;
+  for (const auto& row : e)
+  {
+    for (double v : row)
+    {
+      scale = std::max(scale, std::abs(v));
+    }
+  }
+  if (!(std::abs(det) > 1e-14 * scale * scale * scale))
+  {
+    return false; // flat: contributes nothing
+  }
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+      inverse[r][c] = (e[r1][c1] * e[r2][c2] - e[r1][c2] * e[r2][c1]) / det;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool ClipRay(const Tetrahedron& tet, const Vec3& origin, const Vec3& direction, Segment& out)
+{
+  double a[4], b[4];
+  const Vec3 q = origin - tet.P0;
+  a[0] = 1.0;
+  b[0] = 0.0;
+  for (int r = 0; r < 3; ++r)
+  {
+    a[r + 1] = tet.Inverse[r][0] * q[0] + tet.Inverse[r][1] * q[1] + tet.Inverse[r][2] * q[2];
+    b[r + 1] = tet.Inverse[r][0] * direction[0] + tet.Inverse[r][1] * direction[1] +
+      tet.Inverse[r][2] * direction[2];
+    a[0] -= a[r + 1];
+    b[0] -= b[r + 1];
+  }
+  // lambda_v(t) = a_v + b_v t >= 0 for all v; a ray lying in a face (b ~ 0,
+  // a ~ 0) counts as inside, and the overlap is removed per ray.
+  const double eps = 1e-9;
+  double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
+  for (int v = 0; v < 4; ++v)
+  {
+    if (b[v] > eps)
+    {
+      t0 = std::max(t0, -a[v] / b[v]);
+    }
+    else if (b[v] < -eps)
+    {
+      t1 = std::min(t1, -a[v] / b[v]);
+    }
+    else if (a[v] < -eps)
+    {
+      return false;
+    }
+  }
+  if (!(t1 > t0))
+  {
+    return false;
+  }
+  auto scalar = [&](double t) {
+    double s = 0;
+    for (int v = 0; v < 4; ++v)
+    {
+      s += (a[v] + b[v] * t) * tet.S[v];
+    }
+    return s;
+  };
+  out = { t0, t1, scalar(t0), scalar(t1) };
+  // grad s = sum_v S_v grad lambda_v = Inverse^T (S_1 - S_0, S_2 - S_0, S_3 - S_0).
+  for (int i = 0; i < 3; ++i)
+  {
+    out.Gradient[i] = 0;
+    for (int r = 0; r < 3; ++r)
+    {
+      out.Gradient[i] += tet.Inverse[r][i] * (tet.S[r + 1] - tet.S[0]);
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int InterpolatedPoints(vtkCell* cell)
+{
+  const int n = static_cast<int>(cell->GetNumberOfPoints());
+  switch (cell->GetCellType())
+  {
+    case VTK_HEXAHEDRON:
+    case VTK_VOXEL:
+      return std::min(n, 8);
+    case VTK_WEDGE:
+      return std::min(n, 6);
+    case VTK_PYRAMID:
+      return std::min(n, 5);
+    default:
+      return n;
+  }
+}
+
+//------------------------------------------------------------------------------
+void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scalars,
+  vtkIdType cellId, const Vec3& origin, const Vec3& direction, const Vec3& centre, double tolerance,
+  std::vector<Segment>& out, long long& unresolved)
+{
+  const int n = InterpolatedPoints(cell);
+  std::vector<double> weights(std::max(static_cast<int>(cell->GetNumberOfPoints()), 8)), values(n);
+  for (int v = 0; v < n; ++v)
+  {
+    values[v] = cellId >= 0 ? scalars->GetComponent(cellId, 0)
+                            : scalars->GetComponent(cell->GetPointId(v), 0);
+    if (std::isnan(values[v]))
+    {
+      return; // a cell with a NaN scalar is empty, as in the mapper
+    }
+  }
+  std::vector<double> ts = { 0.0 };
+  std::vector<Vec3> corners;
+  for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
+  {
+    vtkCell* face = cell->GetFace(f);
+    const int m = static_cast<int>(face->GetNumberOfPoints());
+    corners.resize(m);
+    for (int k = 0; k < m; ++k)
+    {
+      double x[3];
+      face->GetPoints()->GetPoint(k, x);
+      corners[k] = { x[0] - centre[0], x[1] - centre[1], x[2] - centre[2] };
+    }
+    if (face->GetCellType() == VTK_PIXEL)
+    {
+      std::swap(corners[2], corners[3]); // pixel order to cyclic order
+    }
+    FaceCrossings(corners, origin, direction, ts);
+  }
+  std::sort(ts.begin(), ts.end());
+  auto evaluate = [&](double t, double& s) {
+    double x[3], pcoords[3], dist2;
+    int subId;
+    for (int i = 0; i < 3; ++i)
+    {
+      x[i] = origin[i] + t * direction[i] + centre[i];
+    }
+    const int found = cell->EvaluatePosition(x, nullptr, subId, pcoords, dist2, weights.data());
+    s = 0.0;
+    for (int v = 0; v < n; ++v)
+    {
+      s += weights[v] * values[v];
+    }
+    // EvaluatePosition itself accepts 1e-3 outside the parametric domain.
+    return found != -1 && cell->GetParametricDistance(pcoords) <= 1e-9;
+  };
+  // [a, b] with its midpoint m known: the quarter points decide, and become
+  // the midpoints of the halves.
+  auto linearize = [&](auto&& self, double a, double sa, double sm, double b, double sb,
+                     int depth) -> void {
+    double sq1, sq3;
+    const double m = 0.5 * (a + b);
+    evaluate(0.5 * (a + m), sq1);
+    evaluate(0.5 * (m + b), sq3);
+    const double deviation = std::max({ std::abs(sm - 0.5 * (sa + sb)),
+      std::abs(sq1 - 0.75 * sa - 0.25 * sb), std::abs(sq3 - 0.25 * sa - 0.75 * sb) });
+    if (depth >= MaximumSplitDepth || !(deviation > tolerance))
+    {
+      unresolved += deviation > tolerance ? 1 : 0;
+      out.push_back({ a, m, sa, sm, { 0, 0, 0 }, id });
+      out.push_back({ m, b, sm, sb, { 0, 0, 0 }, id });
+      return;
+    }
+    self(self, a, sa, sq1, m, sm, depth + 1);
+    self(self, m, sm, sq3, b, sb, depth + 1);
+  };
+  for (size_t k = 0; k + 1 < ts.size(); ++k)
+  {
+    const double a = std::max(ts[k], 0.0), b = ts[k + 1];
+    double sm;
+    if (b > a && evaluate(0.5 * (a + b), sm))
+    {
+      double sa, sb;
+      evaluate(a, sa);
+      evaluate(b, sb);
+      linearize(linearize, a, sa, sm, b, sb, 0);
+    }
+  }
+}
+}
+}

@@ -1,0 +1,76 @@
+/**
+ * @file   ppirayRaySegments.h
+ * @brief  the reference renderer's ray-cell segments: where a ray is in a cell, and its scalar there
+ *
+ * For vtkUnstructuredGridReferenceRenderer only (it shares nothing with the
+ * GPU march): a tetrahedron clipped by its barycentric coordinates; a
+ * hexahedron, voxel, wedge or pyramid cut at its faces' crossings (bilinear
+ * faces exactly) and split until the cell's own interpolation is linear
+ * along the ray. In the renderer's frame (world minus the centre of the
+ * bounds), in double.
+ */
+#ifndef ppirayRaySegments_h
+#define ppirayRaySegments_h
+
+#include "vtkType.h" // for vtkIdType
+
+#include <glm/vec3.hpp> // for glm::dvec3
+#include <vector>       // for std::vector
+
+class vtkCell;
+class vtkDataArray;
+class vtkGenericCell;
+
+namespace ppiray
+{
+namespace reference
+{
+using Vec3 = glm::dvec3;
+
+// A ray piece on which the scalar is linear; its field gradient (constant in
+// a tetrahedron) or, in a general cell, the cell whose gradient is evaluated
+// where an isosurface is found.
+struct Segment
+{
+  double T0, T1, S0, S1;
+  Vec3 Gradient = { 0, 0, 0 };
+  vtkIdType Cell = -1;
+};
+
+// Precomputed per tetrahedron (per tile): barycentric coordinates of x are
+// lambda_{1..3} = Inverse (x - P0), lambda_0 = 1 - sum.
+struct Tetrahedron
+{
+  Vec3 P0;
+  double Inverse[3][3];
+  double S[4];
+};
+
+/** The inverse of a tetrahedron's edge matrix; false when it is flat. */
+bool InvertEdges(const double p[4][3], double inverse[3][3]);
+
+// The piece of the ray origin + t direction (t >= 0) inside the tetrahedron.
+bool ClipRay(const Tetrahedron& tet, const Vec3& origin, const Vec3& direction, Segment& out);
+
+// The corners a linear 3D cell interpolates from: a cell may list more point
+// ids than its type has corners (a 20-node serendipity hexahedron written as
+// VTK_HEXAHEDRON); the type's own functions use the first ones.
+int InterpolatedPoints(vtkCell* cell);
+
+// The pieces of the ray inside a hexahedron, voxel, wedge or pyramid, with the
+// cell's own (isoparametric) interpolation: the ray's crossings with every
+// face (FaceCrossings) cut it into intervals, an interval whose midpoint is
+// inside the cell (parametric distance 0) is inside; each inside interval is
+// split until the interpolated scalar is linear along the ray within
+// `tolerance` at its quarter points and midpoint, and every piece is then
+// integrated exactly like a tetrahedron's. `cellId` >= 0 selects cell scalars.
+// A piece is split at most MaximumSplitDepth times; `unresolved` counts the
+// pieces accepted there without meeting the tolerance.
+constexpr int MaximumSplitDepth = 24;
+void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scalars,
+  vtkIdType cellId, const Vec3& origin, const Vec3& direction, const Vec3& centre, double tolerance,
+  std::vector<Segment>& out, long long& unresolved);
+}
+}
+
+#endif

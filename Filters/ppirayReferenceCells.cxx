@@ -1,0 +1,204 @@
+#include "ppirayReferenceCells.h"
+
+#include "ppirayConformingTetrahedra.h"
+#include "vtkCellType.h"
+#include "vtkMatrix4x4.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ppiray
+{
+namespace reference
+{
+//------------------------------------------------------------------------------
+const vtkIdType* ReferenceCells::ItemPoints(vtkIdType t, vtkIdType& n) const
+{
+  const vtkIdType tets = this->NumberOfTetrahedra();
+  if (t < tets)
+  {
+    n = 4;
+    return this->Tetrahedra.data() + 4 * t;
+  }
+  n = this->GeneralOffsets[t - tets + 1] - this->GeneralOffsets[t - tets];
+  return this->GeneralPoints.data() + this->GeneralOffsets[t - tets];
+}
+
+//------------------------------------------------------------------------------
+ReferenceCells CollectCells(vtkUnstructuredGrid* grid)
+{
+  ReferenceCells cells;
+  std::vector<vtkIdType> unsupported;
+  ppiray::ExtractTetrahedra(grid, cells.Tetrahedra, cells.TetrahedronCell, unsupported);
+  // Quadratic and higher-order tetrahedra: the linear tetrahedron of their
+  // corners (the first four points), as the mapper renders them.
+  for (size_t u = 0; u < unsupported.size(); u += 2)
+  {
+    const int type = static_cast<int>(unsupported[u]);
+    if (type != VTK_QUADRATIC_TETRA && type != VTK_LAGRANGE_TETRAHEDRON &&
+      type != VTK_BEZIER_TETRAHEDRON)
+    {
+      continue;
+    }
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+    {
+      if (grid->GetCellType(c) == type)
+      {
+        vtkIdType npts;
+        const vtkIdType* pts;
+        grid->GetCellPoints(c, npts, pts);
+        cells.Tetrahedra.insert(cells.Tetrahedra.end(), pts, pts + 4);
+        cells.TetrahedronCell.push_back(c);
+        ++cells.CornerTetrahedra;
+      }
+    }
+  }
+  // Hexahedra, voxels, wedges and pyramids take the general path; their
+  // points in CSR form.
+  if (!unsupported.empty())
+  {
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+    {
+      const int type = grid->GetCellType(c);
+      if (type == VTK_TETRA || type == VTK_QUADRATIC_TETRA || type == VTK_LAGRANGE_TETRAHEDRON ||
+        type == VTK_BEZIER_TETRAHEDRON)
+      {
+        continue;
+      }
+      if (type != VTK_HEXAHEDRON && type != VTK_VOXEL && type != VTK_WEDGE && type != VTK_PYRAMID)
+      {
+        ++cells.Skipped;
+        continue;
+      }
+      vtkIdType npts;
+      const vtkIdType* pts;
+      grid->GetCellPoints(c, npts, pts);
+      cells.General.push_back(c);
+      cells.GeneralPoints.insert(cells.GeneralPoints.end(), pts, pts + npts);
+      cells.GeneralOffsets.push_back(static_cast<vtkIdType>(cells.GeneralPoints.size()));
+    }
+  }
+  return cells;
+}
+
+//------------------------------------------------------------------------------
+void ScreenTiles::Build(vtkUnstructuredGrid* grid, const ReferenceCells& cells,
+  vtkMatrix4x4* worldToClip, int width, int height)
+{
+  // Project the points: pixel coordinates (pixel i's centre at i), or flag
+  // those at or behind the eye plane.
+  const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
+  std::vector<double> pixel(2 * numberOfPoints);
+  std::vector<unsigned char> behind(numberOfPoints, 0);
+  for (vtkIdType p = 0; p < numberOfPoints; ++p)
+  {
+    double x[4] = { 0, 0, 0, 1 };
+    grid->GetPoint(p, x);
+    double clip[4];
+    worldToClip->MultiplyPoint(x, clip);
+    if (!(clip[3] > 1e-12))
+    {
+      behind[p] = 1;
+      continue;
+    }
+    pixel[2 * p] = (clip[0] / clip[3] + 1.0) * 0.5 * width - 0.5;
+    pixel[2 * p + 1] = (clip[1] / clip[3] + 1.0) * 0.5 * height - 0.5;
+  }
+
+  // Bin the items into tiles by their projected bounding box.
+  const int tilesX = (width + Size - 1) / Size, tilesY = (height + Size - 1) / Size;
+  this->TilesX = tilesX;
+  this->TilesY = tilesY;
+  // Tile range (x0, x1, y0, y1) of item t.
+  auto tileRange = [&](vtkIdType t, int range[4]) {
+    double lo[2] = { 1e300, 1e300 }, hi[2] = { -1e300, -1e300 };
+    vtkIdType itemSize = 0;
+    const vtkIdType* itemPoints = cells.ItemPoints(t, itemSize);
+    for (vtkIdType v = 0; v < itemSize; ++v)
+    {
+      const vtkIdType p = itemPoints[v];
+      if (behind[p])
+      {
+        range[0] = range[2] = 0;
+        range[1] = tilesX - 1;
+        range[3] = tilesY - 1;
+        return;
+      }
+      for (int i = 0; i < 2; ++i)
+      {
+        lo[i] = std::min(lo[i], pixel[2 * p + i]);
+        hi[i] = std::max(hi[i], pixel[2 * p + i]);
+      }
+    }
+    const int limits[2] = { width - 1, height - 1 };
+    for (int i = 0; i < 2; ++i)
+    {
+      const int a = static_cast<int>(std::floor(std::max(lo[i] - 1.0, -1.0)));
+      const int b = static_cast<int>(std::ceil(std::min(hi[i] + 1.0, limits[i] + 1.0)));
+      range[2 * i] = std::max(0, a) / Size;
+      range[2 * i + 1] = std::min(limits[i], std::max(b, 0)) / Size;
+      if (b < 0 || a > limits[i])
+      {
+        range[2 * i + 1] = range[2 * i] - 1; // off screen
+      }
+    }
+  };
+  this->GeneralBox.assign(cells.General.size(), {});
+  for (size_t g = 0; g < cells.General.size(); ++g)
+  {
+    auto& box = this->GeneralBox[g];
+    box = { 1e300, -1e300, 1e300, -1e300 };
+    for (vtkIdType k = cells.GeneralOffsets[g]; k < cells.GeneralOffsets[g + 1]; ++k)
+    {
+      const vtkIdType p = cells.GeneralPoints[k];
+      if (behind[p])
+      {
+        box = { -1e300, 1e300, -1e300, 1e300 };
+        break;
+      }
+      for (int i = 0; i < 2; ++i)
+      {
+        box[2 * i] = std::min(box[2 * i], pixel[2 * p + i] - 1.0);
+        box[2 * i + 1] = std::max(box[2 * i + 1], pixel[2 * p + i] + 1.0);
+      }
+    }
+  }
+  std::vector<vtkIdType>& tileOffsets = this->Offsets;
+  tileOffsets.assign(static_cast<size_t>(tilesX) * tilesY + 1, 0);
+  for (vtkIdType t = 0; t < cells.NumberOfItems(); ++t)
+  {
+    int r[4];
+    tileRange(t, r);
+    for (int ty = r[2]; ty <= r[3]; ++ty)
+    {
+      for (int tx = r[0]; tx <= r[1]; ++tx)
+      {
+        ++tileOffsets[static_cast<size_t>(ty) * tilesX + tx + 1];
+      }
+    }
+  }
+  for (size_t i = 1; i < tileOffsets.size(); ++i)
+  {
+    tileOffsets[i] += tileOffsets[i - 1];
+  }
+  std::vector<vtkIdType>& tileItems = this->Items;
+  tileItems.assign(tileOffsets.back(), 0);
+  {
+    std::vector<vtkIdType> fill(tileOffsets.begin(), tileOffsets.end() - 1);
+    for (vtkIdType t = 0; t < cells.NumberOfItems(); ++t)
+    {
+      int r[4];
+      tileRange(t, r);
+      for (int ty = r[2]; ty <= r[3]; ++ty)
+      {
+        for (int tx = r[0]; tx <= r[1]; ++tx)
+        {
+          tileItems[fill[static_cast<size_t>(ty) * tilesX + tx]++] = t;
+        }
+      }
+    }
+  }
+}
+}
+}

@@ -1,0 +1,161 @@
+/**
+ * @class   vtkPPIRayCellBuffers
+ * @brief   the cells of a mesh on the GPU, as the march shader reads them
+ *
+ * One kind of cell textures (vtkPPIRayTetrahedralCellBuffers,
+ * vtkPPIRayHexahedralCellBuffers) built on the CPU, their copies as buffer
+ * textures, the boundary triangles the entry pass rasterizes, and the march
+ * traversal that reads them. The one owner of the texel layout: the march
+ * shader's layout constants are written from GetLayout() (LayoutDeclarations()),
+ * never typed in the GLSL.
+ *
+ * Caches: the geometry (BuildGeometry(), when points or cells change) and
+ * the field (BuildField(), when the scalars change) are uploaded by Upload()
+ * when they were rebuilt since the last upload. Internal to PPIRay::Rendering.
+ */
+#ifndef vtkPPIRayCellBuffers_h
+#define vtkPPIRayCellBuffers_h
+
+#include "vtkNew.h"                 // for vtkNew
+#include "vtkPPIRayBufferTexture.h" // for vtkPPIRayBufferTexture
+#include "vtkType.h"                // for vtkIdType
+
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+class vtkDataArray;
+class vtkObject;
+class vtkOpenGLBufferObject;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkUnstructuredGrid;
+class vtkWindow;
+
+class vtkPPIRayCellBuffers
+{
+public:
+  virtual ~vtkPPIRayCellBuffers();
+
+  /**
+   * Texels (4 components each) per cell of the three buffer textures and the
+   * names the march shader reads them by; the neighbour-code base (code =
+   * Faces * cell + face) and markers.
+   */
+  struct Layout
+  {
+    const char* GeometryName;
+    int GeometryTexels;
+    const char* NeighborName;
+    int NeighborTexels;
+    const char* FieldName;
+    int FieldTexels;
+    int Faces;
+    int TurnBack;          // added to a folded face's code where the cell it is in is inverted
+    float FlatCellMarker;  // w of a flat cell's geometry texels (0: none stored)
+    float EmptyCellOffset; // first field value of a cell that renders empty
+  };
+  virtual Layout GetLayout() const = 0;
+
+  /** GLSL constants of GetLayout(), as the march shaders declare them. */
+  std::string LayoutDeclarations() const;
+
+  /** What the mesh needs of the march beyond clean cells (compiled in only then). */
+  struct Features
+  {
+    bool FlatCells = false; // zero-volume cells crossed with zero length
+    bool Folds = false;     // folded faces walked back
+  };
+  virtual Features GetFeatures() const = 0;
+
+  /** "tetrahedra" or "hexahedra", for messages. */
+  virtual const char* GetCellName() const = 0;
+
+  enum class BuildResult
+  {
+    Built,
+    Declined, // the mesh is not for this kind of cells: render it another way
+    Failed    // an error was reported: render nothing
+  };
+  /**
+   * Cell textures of `grid`; warnings and errors are reported as
+   * `reporter`'s.
+   */
+  virtual BuildResult BuildGeometry(vtkUnstructuredGrid* grid, vtkObject* reporter) = 0;
+  /**
+   * The field per cell from one-component `values` (point or cell data);
+   * cells touching a NaN value render empty (a warning counts them).
+   */
+  void BuildField(vtkDataArray* values, bool cellData, vtkObject* reporter);
+
+  /** Centre of the mesh's bounds: every coordinate is relative to it. */
+  virtual const double* GetOrigin() const = 0;
+  virtual vtkIdType GetNumberOfCells() const = 0;
+  /** No ray segment in one cell is longer. */
+  virtual double GetMaximumSegmentLength() const = 0;
+
+  /**
+   * The march traversal's GLSL with its layout and features declared (for
+   * hexahedra, with their field along the ray and `hexahedronMode`'s
+   * integration of it); the integration mode, transfer function and
+   * isosurfaces are left to vtkPPIRayMarchShader.
+   */
+  virtual std::string GetMarchShader(int hexahedronMode) const = 0;
+
+  /** Uploads what was rebuilt since the last upload; false (error reported) on failure. */
+  bool Upload(vtkOpenGLRenderWindow* context, vtkObject* reporter);
+  int GetGeometryUploadCount() const { return this->GeometryUploadCount; }
+  int GetFieldUploadCount() const { return this->FieldUploadCount; }
+
+  /** Activates the cell textures and sets their samplers in `program`. */
+  void Bind(vtkShaderProgram* program, std::vector<vtkTextureObject*>& active);
+
+  ///@{
+  /** The boundary triangles (wound outward) the entry pass draws. */
+  vtkOpenGLBufferObject* GetBoundaryPoints() { return this->BoundaryPoints; }
+  vtkOpenGLBufferObject* GetBoundaryTriangles() { return this->BoundaryTriangles; }
+  size_t GetNumberOfBoundaryIndices() const { return this->GetArrays().BoundaryTriangles.size(); }
+  ///@}
+
+  size_t GetGPUBytes() const;
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkPPIRayCellBuffers();
+
+  // The CPU arrays, laid out as GetLayout() says.
+  struct Arrays
+  {
+    const std::vector<float>& Geometry;
+    const std::vector<int>& Neighbors;
+    const std::vector<float>& Field;
+    const std::vector<float>& BoundaryPoints;          // 3 per point
+    const std::vector<unsigned int>& BoundaryTriangles; // 3 point indices each
+    const std::vector<int>& BoundaryFaces;             // per triangle: the cell and face
+  };
+  virtual Arrays GetArrays() const = 0;
+  // Builds the field texels; returns the number of cells touching a NaN value.
+  virtual vtkIdType ComputeField(vtkDataArray* values, bool cellData) = 0;
+  // Warns about the folded faces of a tangled mesh.
+  void ReportFoldedFaces(vtkIdType folded, vtkObject* reporter) const;
+
+  // Set by the builders: what the next Upload() sends.
+  bool GeometryOnGPU = false;
+  bool FieldOnGPU = false;
+
+private:
+  vtkPPIRayCellBuffers(const vtkPPIRayCellBuffers&) = delete;
+  void operator=(const vtkPPIRayCellBuffers&) = delete;
+
+  vtkPPIRayBufferTexture Geometry;
+  vtkPPIRayBufferTexture Neighbors;
+  vtkPPIRayBufferTexture Field;
+  vtkPPIRayBufferTexture BoundaryFaces;
+  vtkNew<vtkOpenGLBufferObject> BoundaryPoints;
+  vtkNew<vtkOpenGLBufferObject> BoundaryTriangles;
+  size_t BoundaryBytes = 0;
+  int GeometryUploadCount = 0;
+  int FieldUploadCount = 0;
+};
+
+#endif

@@ -1,0 +1,379 @@
+#include "vtkPPIRayDepthPeeling.h"
+
+#include "vtkObject.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPPIRayCellBuffers.h"
+#include "vtkPPIRayPeelingStateRAII.h"
+#include "vtkSetGet.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "composite_fs.h"
+#include "entry_fs.h"
+#include "entry_vs.h"
+
+namespace
+{
+// A render target read texel by texel.
+void NearestClamped(vtkTextureObject* texture, vtkOpenGLRenderWindow* context)
+{
+  texture->SetContext(context);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+}
+
+bool AllocateTarget(
+  vtkTextureObject* texture, vtkOpenGLRenderWindow* context, int w, int h, int components)
+{
+  NearestClamped(texture, context);
+  return texture->Allocate2D(w, h, components, VTK_FLOAT);
+}
+
+bool AllocateDepthTarget(vtkTextureObject* texture, vtkOpenGLRenderWindow* context, int w, int h)
+{
+  NearestClamped(texture, context);
+  return texture->AllocateDepth(w, h, vtkTextureObject::Float32);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkPPIRayDepthPeeling::vtkPPIRayDepthPeeling() = default;
+
+//------------------------------------------------------------------------------
+vtkPPIRayDepthPeeling::~vtkPPIRayDepthPeeling() = default;
+
+//------------------------------------------------------------------------------
+size_t vtkPPIRayDepthPeeling::GetGPUBytes() const
+{
+  // entry id (R32F), 2 accumulated (RGBA32F), 2 exit (R32F), 3 depth (32F).
+  return static_cast<size_t>(this->TargetSize[0]) * this->TargetSize[1] *
+    (4 + 2 * 16 + 2 * 4 + 3 * 4);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayDepthPeeling::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Framebuffer->ReleaseGraphicsResources(window);
+  this->EntryTexture->ReleaseGraphicsResources(window);
+  for (int i = 0; i < 2; ++i)
+  {
+    this->Accumulated[i]->ReleaseGraphicsResources(window);
+    this->Exit[i]->ReleaseGraphicsResources(window);
+    this->LayerDepth[i]->ReleaseGraphicsResources(window);
+  }
+  this->OpaqueDepth->ReleaseGraphicsResources(window);
+  this->OpaqueDepthFormat = -2;
+  this->TargetSize[0] = this->TargetSize[1] = 0;
+  if (this->Query)
+  {
+    glDeleteQueries(1, &this->Query);
+    this->Query = 0;
+  }
+  this->EntryProgram = nullptr;
+  this->EntryVAO->ReleaseGraphicsResources();
+  this->EntryPoints = nullptr;
+  if (this->CompositeQuad)
+  {
+    this->CompositeQuad->ReleaseGraphicsResources(window);
+    this->CompositeQuad.reset();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkPPIRayDepthPeeling::Prepare(vtkOpenGLRenderWindow* context, int width, int height,
+  vtkPPIRayCellBuffers& cells, vtkObject* reporter)
+{
+  if (this->TargetSize[0] != width || this->TargetSize[1] != height)
+  {
+    const bool ok = AllocateTarget(this->EntryTexture, context, width, height, 1) &&
+      AllocateTarget(this->Accumulated[0], context, width, height, 4) &&
+      AllocateTarget(this->Accumulated[1], context, width, height, 4) &&
+      AllocateTarget(this->Exit[0], context, width, height, 1) &&
+      AllocateTarget(this->Exit[1], context, width, height, 1) &&
+      AllocateDepthTarget(this->LayerDepth[0], context, width, height) &&
+      AllocateDepthTarget(this->LayerDepth[1], context, width, height);
+    if (!ok)
+    {
+      vtkErrorWithObjectMacro(
+        reporter, "Could not allocate " << width << "x" << height << " render targets.");
+      this->TargetSize[0] = this->TargetSize[1] = 0;
+      return false;
+    }
+    this->TargetSize[0] = width;
+    this->TargetSize[1] = height;
+  }
+  this->Framebuffer->SetContext(context);
+  if (!this->Query)
+  {
+    glGenQueries(1, &this->Query);
+  }
+  vtkOpenGLShaderCache* cache = context->GetShaderCache();
+  if (!this->EntryProgram)
+  {
+    this->EntryProgram = cache->ReadyShaderProgram(entry_vs, entry_fs, "");
+  }
+  else
+  {
+    cache->ReadyShaderProgram(this->EntryProgram);
+  }
+  if (!this->EntryProgram)
+  {
+    vtkErrorWithObjectMacro(reporter, "Could not build the entry shader.");
+    return false;
+  }
+  if (this->EntryPoints != cells.GetBoundaryPoints() ||
+    this->EntryPointsUpload != cells.GetGeometryUploadCount())
+  {
+    // The vertex array reads the boundary points' buffer as it was bound.
+    this->EntryVAO->Bind();
+    this->EntryVAO->AddAttributeArray(this->EntryProgram, cells.GetBoundaryPoints(), "vertexMC",
+      0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    this->EntryVAO->Release();
+    this->EntryPoints = cells.GetBoundaryPoints();
+    this->EntryPointsUpload = cells.GetGeometryUploadCount();
+  }
+  if (!this->CompositeQuad)
+  {
+    this->CompositeQuad.reset(new vtkOpenGLQuadHelper(context, nullptr, composite_fs, ""));
+  }
+  if (!this->CompositeQuad->Program)
+  {
+    vtkErrorWithObjectMacro(reporter, "Could not build the composite shader.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayDepthPeeling::CopyOpaqueDepth(
+  vtkOpenGLRenderWindow* context, int source, const Frame& frame, vtkObject* reporter)
+{
+  vtkOpenGLState* state = context->GetState();
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, source);
+  const GLenum attachment = source ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
+  GLint bits = 0, type = 0, stencil = 0;
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencil);
+  int format = stencil > 0 ? -1
+    : type == GL_FLOAT     ? vtkTextureObject::Float32
+    : bits >= 32           ? vtkTextureObject::Fixed32
+    : bits >= 24           ? vtkTextureObject::Fixed24
+                           : vtkTextureObject::Fixed16;
+  if (bits == 0)
+  {
+    format = vtkTextureObject::Float32; // no depth buffer: nothing is opaque
+  }
+  const int width = frame.Width, height = frame.Height;
+  if (this->OpaqueDepthFormat != format ||
+    this->OpaqueDepth->GetWidth() != static_cast<unsigned>(width) ||
+    this->OpaqueDepth->GetHeight() != static_cast<unsigned>(height))
+  {
+    this->OpaqueDepth->SetContext(context);
+    this->OpaqueDepth->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->OpaqueDepth->SetMagnificationFilter(vtkTextureObject::Nearest);
+    if (format < 0)
+    {
+      this->OpaqueDepth->AllocateDepthStencil(width, height);
+    }
+    else
+    {
+      this->OpaqueDepth->AllocateDepth(width, height, format);
+    }
+    this->OpaqueDepthFormat = format;
+  }
+  vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
+  fbo->Bind(GL_DRAW_FRAMEBUFFER);
+  fbo->AddDepthAttachment(this->OpaqueDepth);
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  bool copied = false;
+  if (bits > 0)
+  {
+    glBlitFramebuffer(frame.X0, frame.Y0, frame.X0 + width, frame.Y0 + height, 0, 0, width,
+      height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    copied = glGetError() == GL_NO_ERROR;
+  }
+  if (!copied)
+  {
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    if (bits > 0)
+    {
+      vtkWarningWithObjectMacro(reporter,
+        "Could not read the depth buffer (" << bits
+                                            << " bits): opaque geometry does not stop the rays.");
+    }
+  }
+  fbo->RemoveDepthAttachment();
+}
+
+//------------------------------------------------------------------------------
+int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& frame,
+  vtkPPIRayCellBuffers& cells, vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs,
+  bool& cut, vtkObject* reporter)
+{
+  cut = false;
+  if (!this->Prepare(context, frame.Width, frame.Height, cells, reporter))
+  {
+    return -1;
+  }
+  vtkOpenGLState* state = context->GetState();
+  vtkPPIRayPeelingStateRAII saved(state);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+
+  // Opaque depth: VTK's depth buffer under this renderer's viewport.
+  state->PushFramebufferBindings();
+  int source = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &source);
+  this->CopyOpaqueDepth(context, source, frame, reporter);
+  vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
+  fbo->Bind();
+  state->vtkglViewport(0, 0, frame.Width, frame.Height);
+  // Nothing accumulated yet; no march has stopped anywhere.
+  this->Current = 0;
+  this->Layer = 0;
+  fbo->AddColorAttachment(0, this->Accumulated[0]);
+  fbo->AddColorAttachment(1, this->Exit[0]);
+  fbo->ActivateDrawBuffers(2);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  fbo->RemoveColorAttachment(1);
+
+  int peel = 0;
+  bool entered = false;
+  for (; peel < frame.MaximumPeels; ++peel)
+  {
+    entered = this->Enter(context, frame, cells, peel);
+    if (!entered)
+    {
+      break;
+    }
+    this->March(context, march, marchInputs);
+  }
+  cut = peel == frame.MaximumPeels && entered;
+  fbo->RemoveDepthAttachment();
+  state->PopFramebufferBindings();
+  this->Composite(context, frame);
+  return peel;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPPIRayDepthPeeling::Enter(
+  vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayCellBuffers& cells, int peel)
+{
+  vtkOpenGLState* state = context->GetState();
+  vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
+  fbo->AddColorAttachment(0, this->EntryTexture);
+  fbo->AddDepthAttachment(this->LayerDepth[this->Layer]);
+  fbo->ActivateDrawBuffers(1);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(GL_BACK);
+
+  context->GetShaderCache()->ReadyShaderProgram(this->EntryProgram);
+  vtkShaderProgram* entry = this->EntryProgram;
+  vtkTextureObject* inputs[] = { this->LayerDepth[1 - this->Layer], this->OpaqueDepth,
+    this->Accumulated[this->Current] };
+  const char* names[] = { "previousLayerDepth", "opaqueDepth", "accumulated" };
+  for (int i = 0; i < 3; ++i)
+  {
+    inputs[i]->Activate();
+    entry->SetUniformi(names[i], inputs[i]->GetTextureUnit());
+  }
+  entry->SetUniformMatrix4x4("localToClip", const_cast<float*>(frame.LocalToClip));
+  entry->SetUniformi("firstLayer", peel == 0 ? 1 : 0);
+  entry->SetUniformf("terminationAlpha", frame.TerminationAlpha);
+  this->EntryVAO->Bind();
+  cells.GetBoundaryTriangles()->Bind();
+  glBeginQuery(GL_SAMPLES_PASSED, this->Query);
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(cells.GetNumberOfBoundaryIndices()),
+    GL_UNSIGNED_INT, nullptr);
+  glEndQuery(GL_SAMPLES_PASSED);
+  cells.GetBoundaryTriangles()->Release();
+  this->EntryVAO->Release();
+  for (auto* texture : inputs)
+  {
+    texture->Deactivate();
+  }
+  GLuint samplesPassed = 0;
+  glGetQueryObjectuiv(this->Query, GL_QUERY_RESULT, &samplesPassed);
+  return samplesPassed > 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayDepthPeeling::March(
+  vtkOpenGLRenderWindow* context, vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs)
+{
+  // From the entry cell to where the ray leaves the mesh, composited under
+  // what earlier peels accumulated (ping-pong).
+  vtkOpenGLState* state = context->GetState();
+  vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
+  const int next = 1 - this->Current;
+  fbo->RemoveDepthAttachment();
+  fbo->AddColorAttachment(0, this->Accumulated[next]);
+  fbo->AddColorAttachment(1, this->Exit[next]);
+  fbo->ActivateDrawBuffers(2);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_CULL_FACE);
+
+  vtkShaderProgram* program = march.Program;
+  context->GetShaderCache()->ReadyShaderProgram(program);
+  std::vector<vtkTextureObject*> textures = { this->EntryTexture, this->OpaqueDepth,
+    this->Accumulated[this->Current], this->Exit[this->Current] };
+  const char* names[] = { "entryTriangle", "opaqueDepth", "previousAccumulated",
+    "previousExit" };
+  for (size_t i = 0; i < textures.size(); ++i)
+  {
+    textures[i]->Activate();
+    program->SetUniformi(names[i], textures[i]->GetTextureUnit());
+  }
+  marchInputs(program, textures);
+  march.Render();
+  for (auto* texture : textures)
+  {
+    texture->Deactivate();
+  }
+  fbo->RemoveColorAttachment(1);
+  this->Current = next;
+  this->Layer = 1 - this->Layer;
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayDepthPeeling::Composite(vtkOpenGLRenderWindow* context, const Frame& frame)
+{
+  vtkOpenGLState* state = context->GetState();
+  state->vtkglViewport(frame.X0, frame.Y0, frame.Width, frame.Height);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  state->vtkglDepthMask(GL_FALSE);
+  vtkShaderProgram* program = this->CompositeQuad->Program;
+  context->GetShaderCache()->ReadyShaderProgram(program);
+  vtkTextureObject* accumulated = this->Accumulated[this->Current];
+  accumulated->Activate();
+  program->SetUniformi("accumulated", accumulated->GetTextureUnit());
+  this->CompositeQuad->Render();
+  accumulated->Deactivate();
+}

@@ -1,0 +1,100 @@
+/**
+ * @class   vtkPPIRayDepthPeeling
+ * @brief   the passes of a frame: opaque depth, entry and march per peel, composite
+ *
+ * Owns the render targets (sized to the viewport), the entry program and
+ * its vertex array, the occlusion query and the composite program. A frame:
+ * VTK's depth buffer under the viewport is copied (opaque geometry stops the
+ * rays); then per peel an entry pass rasterizes the next layer of
+ * front-facing boundary triangles (entry_vs.glsl, entry_fs.glsl) and the
+ * march pass integrates from there (a full-screen quad of the march program,
+ * its cell and transfer-function inputs bound by the caller), composited
+ * under the earlier peels in ping-pong targets, until no fragment enters; the
+ * result is composited over VTK's framebuffer (composite_fs.glsl). GL state
+ * is restored by vtkPPIRayPeelingStateRAII. Internal to PPIRay::Rendering.
+ */
+#ifndef vtkPPIRayDepthPeeling_h
+#define vtkPPIRayDepthPeeling_h
+
+#include "vtkNew.h" // for vtkNew
+
+#include <functional> // for std::function
+#include <memory>     // for std::unique_ptr
+#include <vector>     // for std::vector
+
+class vtkObject;
+class vtkOpenGLBufferObject;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkOpenGLVertexArrayObject;
+class vtkPPIRayCellBuffers;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkPPIRayDepthPeeling
+{
+public:
+  vtkPPIRayDepthPeeling();
+  ~vtkPPIRayDepthPeeling();
+
+  struct Frame
+  {
+    int X0, Y0, Width, Height; // the renderer's tiled viewport
+    float LocalToClip[16];     // column-major: the mesh's local frame to clip space
+    float TerminationAlpha;    // a pixel this opaque takes no more peels
+    int MaximumPeels;
+  };
+  /** Binds the march program's inputs other than the peeling's own. */
+  using MarchInputs = std::function<void(vtkShaderProgram*, std::vector<vtkTextureObject*>&)>;
+
+  /**
+   * Renders a frame of `cells` with `march` (a program reading
+   * march_common_fs.glsl's inputs); returns the number of peels, -1 on
+   * failure (reported). `cut`: whether MaximumPeels stopped it.
+   */
+  int Render(vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayCellBuffers& cells,
+    vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs, bool& cut, vtkObject* reporter);
+
+  size_t GetGPUBytes() const;
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkPPIRayDepthPeeling(const vtkPPIRayDepthPeeling&) = delete;
+  void operator=(const vtkPPIRayDepthPeeling&) = delete;
+
+  bool Prepare(vtkOpenGLRenderWindow* context, int width, int height, vtkPPIRayCellBuffers& cells,
+    vtkObject* reporter);
+  // VTK's depth (resolving multisampling) into a texture of the very same
+  // format, as glBlitFramebuffer requires for depth.
+  void CopyOpaqueDepth(vtkOpenGLRenderWindow* context, int source, const Frame& frame,
+    vtkObject* reporter);
+  // The next layer of boundary triangles into EntryTexture; whether any
+  // fragment entered.
+  bool Enter(vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayCellBuffers& cells,
+    int peel);
+  void March(vtkOpenGLRenderWindow* context, vtkOpenGLQuadHelper& march,
+    const MarchInputs& marchInputs);
+  void Composite(vtkOpenGLRenderWindow* context, const Frame& frame);
+
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkNew<vtkTextureObject> EntryTexture;
+  vtkNew<vtkTextureObject> Accumulated[2]; // ping-pong: colour so far
+  vtkNew<vtkTextureObject> Exit[2];        // ping-pong: where the last march stopped
+  vtkNew<vtkTextureObject> LayerDepth[2];
+  vtkNew<vtkTextureObject> OpaqueDepth; // same format as VTK's depth buffer
+  int OpaqueDepthFormat = -2;
+  int TargetSize[2] = { 0, 0 };
+  int Current = 0; // the Accumulated and Exit the next pass reads
+  int Layer = 0;   // the LayerDepth the next entry pass writes
+  unsigned int Query = 0;
+
+  vtkShaderProgram* EntryProgram = nullptr; // owned by the shader cache
+  vtkNew<vtkOpenGLVertexArrayObject> EntryVAO;
+  vtkOpenGLBufferObject* EntryPoints = nullptr; // the buffer EntryVAO reads
+  int EntryPointsUpload = -1;                   // its upload count then
+  std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+};
+
+#endif

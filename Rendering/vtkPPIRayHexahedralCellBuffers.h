@@ -1,0 +1,53 @@
+/**
+ * @class   vtkPPIRayHexahedralCellBuffers
+ * @brief   hexahedra on the GPU without subdivision: corners, neighbour codes, trilinear field
+ *
+ * vtkHexahedralCellTextures (a mesh of hexahedra and voxels only) behind
+ * vtkPPIRayCellBuffers, marched by glsl/march_hexahedra_fs.glsl with the
+ * field along the ray (hexahedron_field_fs.glsl) integrated as the
+ * hexahedron mode says (hexahedron_accurate_fs.glsl, hexahedron_fast_fs.glsl).
+ * BuildGeometry() declines any other mesh, and one whose cells have no frame
+ * at any corner: those are rendered as tetrahedra. Internal to
+ * PPIRay::Rendering.
+ */
+#ifndef vtkPPIRayHexahedralCellBuffers_h
+#define vtkPPIRayHexahedralCellBuffers_h
+
+#include "vtkPPIRayCellBuffers.h"
+
+#include "vtkHexahedralCellTextures.h" // for vtkHexahedralCellTextures
+#include "vtkNew.h"                    // for vtkNew
+
+class vtkPPIRayHexahedralCellBuffers : public vtkPPIRayCellBuffers
+{
+public:
+  Layout GetLayout() const override;
+  Features GetFeatures() const override;
+  const char* GetCellName() const override { return "hexahedra"; }
+  BuildResult BuildGeometry(vtkUnstructuredGrid* grid, vtkObject* reporter) override;
+  const double* GetOrigin() const override { return this->Cells->GetOrigin(); }
+  vtkIdType GetNumberOfCells() const override { return this->Cells->GetNumberOfHexahedra(); }
+  double GetMaximumSegmentLength() const override
+  {
+    return this->Cells->GetMaximumCellDiameter();
+  }
+  std::string GetMarchShader(int hexahedronMode) const override;
+
+protected:
+  Arrays GetArrays() const override
+  {
+    const auto& c = *this->Cells;
+    return { c.GetCorners(), c.GetNeighbors(), c.GetCoefficients(), c.GetBoundaryPoints(), c.GetBoundaryTriangles(),
+      c.GetBoundaryFaces() };
+  }
+  vtkIdType ComputeField(vtkDataArray* values, bool cellData) override
+  {
+    this->Cells->BuildField(values, cellData, 0);
+    return this->Cells->GetNumberOfNaNScalars();
+  }
+
+private:
+  vtkNew<vtkHexahedralCellTextures> Cells;
+};
+
+#endif

@@ -1,0 +1,106 @@
+#include "vtkPPIRayScalarField.h"
+
+#include "vtkAbstractMapper.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
+#include "vtkObject.h"
+#include "vtkSetGet.h"
+
+#include <algorithm>
+#include <cmath>
+
+//------------------------------------------------------------------------------
+vtkPPIRayScalarField::vtkPPIRayScalarField() = default;
+
+//------------------------------------------------------------------------------
+vtkPPIRayScalarField::~vtkPPIRayScalarField() = default;
+
+//------------------------------------------------------------------------------
+vtkPPIRayScalarField::Status vtkPPIRayScalarField::Update(
+  vtkDataSet* input, const Selection& selection, vtkObject* reporter)
+{
+  int cellFlag = 0;
+  vtkDataArray* scalars = vtkDataArray::SafeDownCast(vtkAbstractMapper::GetScalars(input,
+    selection.ScalarMode, selection.ArrayAccessMode, selection.ArrayId, selection.ArrayName,
+    cellFlag));
+  if (!scalars)
+  {
+    if (!this->Reported)
+    {
+      vtkErrorWithObjectMacro(reporter,
+        "No scalars to render: the input has no "
+          << (selection.ArrayName && *selection.ArrayName ? selection.ArrayName : "active")
+          << " point or cell scalar array.");
+    }
+    this->Array = nullptr;
+    this->Reported = true;
+    return Status::Failed;
+  }
+  this->Reported = false;
+  const int components = scalars->GetNumberOfComponents();
+  const int component = components > 1 && selection.Magnitude
+    ? -1
+    : std::min(std::max(selection.Component, 0), components - 1);
+  if (this->Array == scalars && this->CellFlag == cellFlag && this->Component == component &&
+    scalars->GetMTime() <= this->Time.GetMTime())
+  {
+    return Status::Unchanged;
+  }
+  if (components > 1 && component >= 0 && component != selection.Component)
+  {
+    vtkWarningWithObjectMacro(reporter,
+      "VectorComponent " << selection.Component << " is not a component of "
+                         << (scalars->GetName() ? scalars->GetName() : "the array") << " ("
+                         << components << " components); using " << component << ".");
+  }
+  this->Array = scalars;
+  this->CellFlag = cellFlag;
+  this->Component = component;
+  this->Time.Modified();
+  double range[2];
+  scalars->GetRange(range, component); // NaN left out; component -1: magnitude
+  if (std::isinf(range[0]) || std::isinf(range[1]))
+  {
+    vtkErrorWithObjectMacro(reporter,
+      "Scalar array " << (scalars->GetName() ? scalars->GetName() : "")
+                      << " has infinite values; nothing is rendered.");
+    this->Array = nullptr;
+    return Status::Failed;
+  }
+  if (!(range[0] <= range[1]))
+  {
+    range[0] = range[1] = 0.0; // every value NaN: every cell empty
+  }
+  this->Range[0] = range[0];
+  this->Range[1] = range[1];
+  const double centre = 0.5 * (range[0] + range[1]);
+  this->Shift = std::abs(centre) > range[1] - range[0] ? centre : 0.0;
+  this->Values = scalars;
+  if (components > 1 || this->Shift != 0.0)
+  {
+    const vtkIdType n = scalars->GetNumberOfTuples();
+    this->Derived->SetNumberOfComponents(1);
+    this->Derived->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double value = 0.0;
+      if (component < 0)
+      {
+        for (int c = 0; c < components; ++c)
+        {
+          const double v = scalars->GetComponent(i, c);
+          value += v * v;
+        }
+        value = std::sqrt(value);
+      }
+      else
+      {
+        value = scalars->GetComponent(i, component);
+      }
+      this->Derived->SetValue(i, value - this->Shift);
+    }
+    this->Values = this->Derived;
+  }
+  return Status::Changed;
+}

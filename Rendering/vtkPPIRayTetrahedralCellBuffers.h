@@ -1,0 +1,52 @@
+/**
+ * @class   vtkPPIRayTetrahedralCellBuffers
+ * @brief   tetrahedra on the GPU: planes, neighbour codes, linear field
+ *
+ * vtkTetrahedralCellTextures (any mesh of 3D linear cells, split into
+ * conforming tetrahedra) behind vtkPPIRayCellBuffers, marched by
+ * glsl/march_fs.glsl. Internal to PPIRay::Rendering.
+ */
+#ifndef vtkPPIRayTetrahedralCellBuffers_h
+#define vtkPPIRayTetrahedralCellBuffers_h
+
+#include "vtkPPIRayCellBuffers.h"
+
+#include "vtkNew.h"                     // for vtkNew
+#include "vtkTetrahedralCellTextures.h" // for vtkTetrahedralCellTextures
+
+class vtkPPIRayTetrahedralCellBuffers : public vtkPPIRayCellBuffers
+{
+public:
+  Layout GetLayout() const override;
+  Features GetFeatures() const override;
+  const char* GetCellName() const override { return "tetrahedra"; }
+  BuildResult BuildGeometry(vtkUnstructuredGrid* grid, vtkObject* reporter) override;
+  const double* GetOrigin() const override { return this->Cells->GetOrigin(); }
+  vtkIdType GetNumberOfCells() const override { return this->Cells->GetNumberOfTetrahedra(); }
+  double GetMaximumSegmentLength() const override { return this->Cells->GetMaximumEdgeLength(); }
+  std::string GetMarchShader(int hexahedronMode) const override;
+
+  /** Tetrahedra rendered with a volume (flat ones are crossed, not counted). */
+  vtkIdType GetNumberOfTetrahedra() const
+  {
+    return this->Cells->GetNumberOfTetrahedra() - this->Cells->GetNumberOfDegenerateTetrahedra();
+  }
+
+protected:
+  Arrays GetArrays() const override
+  {
+    const auto& c = *this->Cells;
+    return { c.GetFacePlanes(), c.GetNeighbors(), c.GetField(), c.GetBoundaryPoints(), c.GetBoundaryTriangles(),
+      c.GetBoundaryFaces() };
+  }
+  vtkIdType ComputeField(vtkDataArray* values, bool cellData) override
+  {
+    this->Cells->BuildField(values, cellData, 0);
+    return this->Cells->GetNumberOfNaNScalars();
+  }
+
+private:
+  vtkNew<vtkTetrahedralCellTextures> Cells;
+};
+
+#endif
