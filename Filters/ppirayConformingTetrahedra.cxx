@@ -18,8 +18,8 @@ namespace
 // the consumers orient each tetrahedron by the sign of its volume). -1 ends a
 // triangle.
 using Face = std::array<int, 4>;
-const Face HexahedronFaces[] = { { 0, 4, 7, 3 }, { 1, 2, 6, 5 }, { 0, 1, 5, 4 },
-  { 3, 7, 6, 2 }, { 0, 3, 2, 1 }, { 4, 5, 6, 7 } };
+const Face HexahedronFaces[] = { { 0, 4, 7, 3 }, { 1, 2, 6, 5 }, { 0, 1, 5, 4 }, { 3, 7, 6, 2 },
+  { 0, 3, 2, 1 }, { 4, 5, 6, 7 } };
 const Face WedgeFaces[] = { { 0, 1, 2, -1 }, { 3, 5, 4, -1 }, { 0, 3, 4, 1 }, { 1, 4, 5, 2 },
   { 2, 5, 3, 0 } };
 const Face PyramidFaces[] = { { 0, 3, 2, 1 }, { 0, 1, 4, -1 }, { 1, 2, 4, -1 }, { 2, 3, 4, -1 },
@@ -72,7 +72,7 @@ namespace
 // apex's point (a cone from it); quadrilaterals split by `diagonals`. For a
 // cell without repeated points these are the triangles of the faces that do
 // not contain the apex: the diagonal of the others goes through it.
-template <size_t N>
+template<size_t N>
 void AppendCone(const Face (&faces)[N], const vtkIdType* pts, int apex,
   const ppiray::QuadDiagonals& diagonals, std::vector<vtkIdType>& tets)
 {
@@ -170,7 +170,7 @@ bool OneSign(vtkUnstructuredGrid* grid, const vtkIdType* tets, size_t n)
 // every tetrahedron by its sign, would count that volume twice. Then the
 // first corner (by id) whose cone has one sign replaces the cone from
 // tets[first] on; if none has, the cone from the smallest point stays.
-template <size_t N>
+template<size_t N>
 void ConeFromStarPoint(vtkUnstructuredGrid* grid, const Face (&faces)[N], const vtkIdType* c,
   int corners, const ppiray::QuadDiagonals& diagonals, size_t first, std::vector<vtkIdType>& tets)
 {
@@ -245,10 +245,10 @@ void QuadDiagonals::AddHexahedron(const vtkIdType c[8])
     const auto ids = SortedIds(c[q[0]], c[q[1]], c[q[2]], c[q[3]]);
     const bool second = !SplitsAlongFirstDiagonal(c[q[0]], c[q[1]], c[q[2]], c[q[3]]);
     if (std::adjacent_find(ids.begin(), ids.end()) == ids.end() &&
-      FoldsOntoAnotherFace(c, f, second) && !FoldsOntoAnotherFace(c, f, !second))
+        FoldsOntoAnotherFace(c, f, second) && !FoldsOntoAnotherFace(c, f, !second))
     {
-      this->Unfolded.emplace(ids,
-        std::array<vtkIdType, 2>{ c[q[second ? 0 : 1]], c[q[second ? 2 : 3]] });
+      this->Unfolded.emplace(
+        ids, std::array<vtkIdType, 2>{ c[q[second ? 0 : 1]], c[q[second ? 2 : 3]] });
     }
   }
 }
@@ -257,18 +257,20 @@ void QuadDiagonals::AddHexahedron(const vtkIdType c[8])
 void QuadDiagonals::Build(vtkUnstructuredGrid* grid)
 {
   this->Unfolded.clear();
-  ForEachCell(grid, [&](vtkIdType, int type, vtkIdType npts, const vtkIdType* pts) {
-    const LinearShape shape = LinearShapeOf(type);
-    if (shape.Type == VTK_HEXAHEDRON && npts >= 8)
+  ForEachCell(grid,
+    [&](vtkIdType, int type, vtkIdType npts, const vtkIdType* pts)
     {
-      vtkIdType corners[8];
-      for (int i = 0; i < 8; ++i)
+      const LinearShape shape = LinearShapeOf(type);
+      if (shape.Type == VTK_HEXAHEDRON && npts >= 8)
       {
-        corners[i] = pts[HexahedronCorner(type, i)];
+        vtkIdType corners[8];
+        for (int i = 0; i < 8; ++i)
+        {
+          corners[i] = pts[HexahedronCorner(type, i)];
+        }
+        this->AddHexahedron(corners);
       }
-      this->AddHexahedron(corners);
-    }
-  });
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -301,56 +303,58 @@ void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, Tetrahe
   {
     diagonals.Build(grid);
   }
-  ForEachCell(grid, [&](vtkIdType cellId, int type, vtkIdType npts, const vtkIdType* pts) {
-    const LinearShape shape = LinearShapeOf(type);
-    const bool accepted = shape.Type != 0 && npts >= shape.Corners &&
-      (!tetrahedraOnly || (type == VTK_TETRA && npts == 4));
-    if (!accepted)
+  ForEachCell(grid,
+    [&](vtkIdType cellId, int type, vtkIdType npts, const vtkIdType* pts)
     {
-      auto it = split.Unsupported.begin();
-      for (; it != split.Unsupported.end(); it += 2)
+      const LinearShape shape = LinearShapeOf(type);
+      const bool accepted = shape.Type != 0 && npts >= shape.Corners &&
+                            (!tetrahedraOnly || (type == VTK_TETRA && npts == 4));
+      if (!accepted)
       {
-        if (*it == type)
+        auto it = split.Unsupported.begin();
+        for (; it != split.Unsupported.end(); it += 2)
         {
-          ++*(it + 1);
-          break;
+          if (*it == type)
+          {
+            ++*(it + 1);
+            break;
+          }
         }
+        if (it == split.Unsupported.end())
+        {
+          split.Unsupported.push_back(type);
+          split.Unsupported.push_back(1);
+        }
+        return;
       }
-      if (it == split.Unsupported.end())
+      const size_t before = split.Tets.size();
+      vtkIdType corners[8];
+      for (int i = 0; i < shape.Corners; ++i)
       {
-        split.Unsupported.push_back(type);
-        split.Unsupported.push_back(1);
+        corners[i] = pts[HexahedronCorner(type, i)];
       }
-      return;
-    }
-    const size_t before = split.Tets.size();
-    vtkIdType corners[8];
-    for (int i = 0; i < shape.Corners; ++i)
-    {
-      corners[i] = pts[HexahedronCorner(type, i)];
-    }
-    const int apex = SmallestPoint(corners, shape.Corners);
-    switch (shape.Type)
-    {
-      case VTK_TETRA:
-        split.Tets.insert(split.Tets.end(), corners, corners + 4);
-        break;
-      case VTK_HEXAHEDRON:
-        AppendCone(HexahedronFaces, corners, apex, diagonals, split.Tets);
-        ConeFromStarPoint(grid, HexahedronFaces, corners, 8, diagonals, before, split.Tets);
-        break;
-      case VTK_WEDGE:
-        AppendCone(WedgeFaces, corners, apex, diagonals, split.Tets);
-        ConeFromStarPoint(grid, WedgeFaces, corners, 6, diagonals, before, split.Tets);
-        break;
-      default:
-        AppendCone(PyramidFaces, corners, apex, diagonals, split.Tets);
-        ConeFromStarPoint(grid, PyramidFaces, corners, 5, diagonals, before, split.Tets);
-        break;
-    }
-    split.CellIds.insert(split.CellIds.end(), (split.Tets.size() - before) / 4, cellId);
-    split.NumberOfSplitCells += shape.Type != VTK_TETRA ? 1 : 0;
-    split.NumberOfQuadraticCells += shape.HigherOrder ? 1 : 0;
-  });
+      const int apex = SmallestPoint(corners, shape.Corners);
+      switch (shape.Type)
+      {
+        case VTK_TETRA:
+          split.Tets.insert(split.Tets.end(), corners, corners + 4);
+          break;
+        case VTK_HEXAHEDRON:
+          AppendCone(HexahedronFaces, corners, apex, diagonals, split.Tets);
+          ConeFromStarPoint(grid, HexahedronFaces, corners, 8, diagonals, before, split.Tets);
+          break;
+        case VTK_WEDGE:
+          AppendCone(WedgeFaces, corners, apex, diagonals, split.Tets);
+          ConeFromStarPoint(grid, WedgeFaces, corners, 6, diagonals, before, split.Tets);
+          break;
+        default:
+          AppendCone(PyramidFaces, corners, apex, diagonals, split.Tets);
+          ConeFromStarPoint(grid, PyramidFaces, corners, 5, diagonals, before, split.Tets);
+          break;
+      }
+      split.CellIds.insert(split.CellIds.end(), (split.Tets.size() - before) / 4, cellId);
+      split.NumberOfSplitCells += shape.Type != VTK_TETRA ? 1 : 0;
+      split.NumberOfQuadraticCells += shape.HigherOrder ? 1 : 0;
+    });
 }
 }

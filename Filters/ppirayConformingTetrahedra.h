@@ -27,13 +27,13 @@
 #ifndef ppirayConformingTetrahedra_h
 #define ppirayConformingTetrahedra_h
 
-#include "ppirayFiltersModule.h" // for export macro
-#include "vtkCellArray.h"              // for ForEachCell
-#include "vtkCellArrayIterator.h"      // for ForEachCell
-#include "vtkCellType.h"               // for VTK_VOXEL
-#include "vtkSmartPointer.h"           // for ForEachCell
+#include "ppirayFiltersModule.h"  // for export macro
+#include "vtkCellArray.h"         // for ForEachCell
+#include "vtkCellArrayIterator.h" // for ForEachCell
+#include "vtkCellType.h"          // for VTK_VOXEL
+#include "vtkSmartPointer.h"      // for ForEachCell
 #include "vtkType.h"
-#include "vtkUnstructuredGrid.h"       // for ForEachCell
+#include "vtkUnstructuredGrid.h" // for ForEachCell
 
 #include <array>  // for std::array
 #include <map>    // for std::map
@@ -42,7 +42,7 @@
 namespace ppiray
 {
 /** visit(cellId, cellType, npts, pts) for every cell of `grid`, in order. */
-template <typename Visit>
+template<typename Visit>
 void ForEachCell(vtkUnstructuredGrid* grid, Visit&& visit)
 {
   vtkCellArray* cells = grid ? grid->GetCells() : nullptr;
@@ -82,8 +82,8 @@ inline int HexahedronCorner(int cellType, int i)
 /** What SplitIntoTetrahedra found, per kind of input cell. */
 struct TetrahedralSplit
 {
-  std::vector<vtkIdType> Tets;    // 4 point ids per tetrahedron
-  std::vector<vtkIdType> CellIds; // input cell of each tetrahedron
+  std::vector<vtkIdType> Tets;          // 4 point ids per tetrahedron
+  std::vector<vtkIdType> CellIds;       // input cell of each tetrahedron
   vtkIdType NumberOfSplitCells = 0;     // hexahedra, voxels, wedges, pyramids
   vtkIdType NumberOfQuadraticCells = 0; // rendered through their linear corners
   std::vector<vtkIdType> Unsupported;   // pairs (cell type, count), left out
@@ -95,9 +95,8 @@ struct TetrahedralSplit
  * (`cellIds`); other cell types are counted per type in `unsupported` (pairs
  * of cell type, count), and left out (SplitIntoTetrahedra, tetrahedra only).
  */
-PPIRAYFILTERS_EXPORT void ExtractTetrahedra(vtkUnstructuredGrid* grid,
-  std::vector<vtkIdType>& tets, std::vector<vtkIdType>& cellIds,
-  std::vector<vtkIdType>& unsupported);
+PPIRAYFILTERS_EXPORT void ExtractTetrahedra(vtkUnstructuredGrid* grid, std::vector<vtkIdType>& tets,
+  std::vector<vtkIdType>& cellIds, std::vector<vtkIdType>& unsupported);
 
 /**
  * The tetrahedra of `grid`: its tetrahedra as they are and, unless

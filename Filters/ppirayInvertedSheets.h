@@ -31,9 +31,9 @@ namespace ppiray
  * neighbor(c, f) is the cell across face f of c (< 0: none), folded(c, f)
  * whether that face is folded, volume(c) the cell's unsigned volume.
  */
-template <typename Neighbor, typename Folded, typename Volume>
-std::vector<unsigned char> InvertedSheets(vtkIdType numberOfCells, int facesPerCell,
-  Neighbor&& neighbor, Folded&& folded, Volume&& volume)
+template<typename Neighbor, typename Folded, typename Volume>
+std::vector<unsigned char> InvertedSheets(
+  vtkIdType numberOfCells, int facesPerCell, Neighbor&& neighbor, Folded&& folded, Volume&& volume)
 {
   std::vector<signed char> orientation(numberOfCells, 0);
   std::vector<vtkIdType> part;
@@ -82,8 +82,8 @@ std::vector<unsigned char> InvertedSheets(vtkIdType numberOfCells, int facesPerC
  * through the cell it is in (it is inverted, the neighbour is not) rather
  * than through the neighbour.
  */
-inline bool WalksBackInPlace(const std::vector<unsigned char>& inverted, vtkIdType cell,
-  vtkIdType neighbor)
+inline bool WalksBackInPlace(
+  const std::vector<unsigned char>& inverted, vtkIdType cell, vtkIdType neighbor)
 {
   return inverted[cell] && !inverted[neighbor];
 }

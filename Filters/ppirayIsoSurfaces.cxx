@@ -34,7 +34,7 @@ IsoSurfaceMode ChooseIsoSurfaceMode(
   if (blendMode != compositeBlend)
   {
     warning = "Blend mode " + std::to_string(blendMode) +
-      " is not supported (composite and isosurface only); rendering composite.";
+              " is not supported (composite and isosurface only); rendering composite.";
     return NoIsoSurfaces;
   }
   return embed && numberOfValues > 0 ? EmbeddedIsoSurfaces : NoIsoSurfaces;
@@ -73,8 +73,7 @@ glm::dvec3 IsoSurfaces::Shaded(
   glm::dvec3 diffuse(0.0), specular(0.0);
   for (const Light& light : this->Lights)
   {
-    const glm::dvec3 l =
-      light.Positional ? glm::normalize(light.Vector - x) : light.Vector;
+    const glm::dvec3 l = light.Positional ? glm::normalize(light.Vector - x) : light.Vector;
     const double nl = glm::dot(n, l);
     if (nl <= 0)
     {

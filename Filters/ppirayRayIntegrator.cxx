@@ -21,7 +21,8 @@ void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf,
   double reached = -std::numeric_limits<double>::infinity();
   std::vector<double> cuts;
   // The volume on [t0, t1] where s goes linearly from s0 to s1.
-  auto integrateLinear = [&](double t0, double t1, double s0, double s1) {
+  auto integrateLinear = [&](double t0, double t1, double s0, double s1)
+  {
     cuts.assign({ 0.0, 1.0 });
     const double lo = std::min(s0, s1), hi = std::max(s0, s1);
     auto first = std::upper_bound(tf.Breaks.begin(), tf.Breaks.end(), lo);
@@ -53,7 +54,8 @@ void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf,
       transmittance *= transparency;
     }
   };
-  auto surface = [&](int i, const Segment& seg, double t) {
+  auto surface = [&](int i, const Segment& seg, double t)
+  {
     const Vec3 x = origin + t * direction + centre;
     const Vec3 rgb =
       iso.Shaded(i, x, seg.Cell < 0 ? seg.Gradient : gradientAt(seg.Cell, t), direction);

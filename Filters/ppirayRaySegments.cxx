@@ -8,6 +8,7 @@
 #include "vtkPoints.h"
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -88,52 +89,32 @@ void FaceCrossings(
 }
 
 //------------------------------------------------------------------------------
-bool InvertEdges(const double p[4][3], double inverse[3][3])
+bool InvertEdges(const Vec3 p[4], glm::dmat3& inverse)
 {
-  const double e[3][3] = { { p[1][0] - p[0][0], p[2][0] - p[0][0], p[3][0] - p[0][0] },
-    { p[1][1] - p[0][1], p[2][1] - p[0][1], p[3][1] - p[0][1] },
-    { p[1][2] - p[0][2], p[2][2] - p[0][2], p[3][2] - p[0][2] } };
-  const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-    e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-    e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+  const glm::dmat3 e(p[1] - p[0], p[2] - p[0], p[3] - p[0]);
   double scale = 0;
-  for (const auto& row : e)
+  for (int c = 0; c < 3; ++c)
   {
-    for (double v : row)
+    for (int r = 0; r < 3; ++r)
     {
-      scale = std::max(scale, std::abs(v));
+      scale = std::max(scale, std::abs(e[c][r]));
     }
   }
-  if (!(std::abs(det) > 1e-14 * scale * scale * scale))
+  if (!(std::abs(glm::determinant(e)) > 1e-14 * scale * scale * scale))
   {
     return false; // flat: contributes nothing
   }
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
-      inverse[r][c] = (e[r1][c1] * e[r2][c2] - e[r1][c2] * e[r2][c1]) / det;
-    }
-  }
+  inverse = glm::inverse(e);
   return true;
 }
 
 //------------------------------------------------------------------------------
 bool ClipRay(const Tetrahedron& tet, const Vec3& origin, const Vec3& direction, Segment& out)
 {
-  double a[4], b[4];
-  const Vec3 q = origin - tet.P0;
-  a[0] = 1.0;
-  b[0] = 0.0;
-  for (int r = 0; r < 3; ++r)
-  {
-    a[r + 1] = tet.Inverse[r][0] * q[0] + tet.Inverse[r][1] * q[1] + tet.Inverse[r][2] * q[2];
-    b[r + 1] = tet.Inverse[r][0] * direction[0] + tet.Inverse[r][1] * direction[1] +
-      tet.Inverse[r][2] * direction[2];
-    a[0] -= a[r + 1];
-    b[0] -= b[r + 1];
-  }
+  // Barycentric coordinates along the ray: lambda_v(t) = a_v + b_v t.
+  const Vec3 a123 = tet.Inverse * (origin - tet.P0), b123 = tet.Inverse * direction;
+  const double a[4] = { 1.0 - a123.x - a123.y - a123.z, a123.x, a123.y, a123.z };
+  const double b[4] = { -b123.x - b123.y - b123.z, b123.x, b123.y, b123.z };
   // lambda_v(t) = a_v + b_v t >= 0 for all v; a ray lying in a face (b ~ 0,
   // a ~ 0) counts as inside, and the overlap is removed per ray.
   const double eps = 1e-9;
@@ -157,7 +138,8 @@ bool ClipRay(const Tetrahedron& tet, const Vec3& origin, const Vec3& direction, 
   {
     return false;
   }
-  auto scalar = [&](double t) {
+  auto scalar = [&](double t)
+  {
     double s = 0;
     for (int v = 0; v < 4; ++v)
     {
@@ -167,14 +149,8 @@ bool ClipRay(const Tetrahedron& tet, const Vec3& origin, const Vec3& direction, 
   };
   out = { t0, t1, scalar(t0), scalar(t1) };
   // grad s = sum_v S_v grad lambda_v = Inverse^T (S_1 - S_0, S_2 - S_0, S_3 - S_0).
-  for (int i = 0; i < 3; ++i)
-  {
-    out.Gradient[i] = 0;
-    for (int r = 0; r < 3; ++r)
-    {
-      out.Gradient[i] += tet.Inverse[r][i] * (tet.S[r + 1] - tet.S[0]);
-    }
-  }
+  out.Gradient = glm::transpose(tet.Inverse) *
+                 Vec3(tet.S[1] - tet.S[0], tet.S[2] - tet.S[0], tet.S[3] - tet.S[0]);
   return true;
 }
 
@@ -232,7 +208,8 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
     FaceCrossings(corners, origin, direction, ts);
   }
   std::sort(ts.begin(), ts.end());
-  auto evaluate = [&](double t, double& s) {
+  auto evaluate = [&](double t, double& s)
+  {
     double x[3], pcoords[3], dist2;
     int subId;
     for (int i = 0; i < 3; ++i)
@@ -251,7 +228,8 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
   // [a, b] with its midpoint m known: the quarter points decide, and become
   // the midpoints of the halves.
   auto linearize = [&](auto&& self, double a, double sa, double sm, double b, double sb,
-                     int depth) -> void {
+                     int depth) -> void
+  {
     double sq1, sq3;
     const double m = 0.5 * (a + b);
     evaluate(0.5 * (a + m), sq1);

@@ -1,6 +1,7 @@
 /**
  * @file   ppirayRaySegments.h
- * @brief  the reference renderer's ray-cell segments: where a ray is in a cell, and its scalar there
+ * @brief  the reference renderer's ray-cell segments: where a ray is in a cell, and its scalar
+ * there
  *
  * For vtkUnstructuredGridReferenceRenderer only (it shares nothing with the
  * GPU march): a tetrahedron clipped by its barycentric coordinates; a
@@ -14,8 +15,9 @@
 
 #include "vtkType.h" // for vtkIdType
 
-#include <glm/vec3.hpp> // for glm::dvec3
-#include <vector>       // for std::vector
+#include <glm/mat3x3.hpp> // for glm::dmat3
+#include <glm/vec3.hpp>   // for glm::dvec3
+#include <vector>         // for std::vector
 
 class vtkCell;
 class vtkDataArray;
@@ -42,12 +44,15 @@ struct Segment
 struct Tetrahedron
 {
   Vec3 P0;
-  double Inverse[3][3];
+  glm::dmat3 Inverse;
   double S[4];
 };
 
-/** The inverse of a tetrahedron's edge matrix; false when it is flat. */
-bool InvertEdges(const double p[4][3], double inverse[3][3]);
+/**
+ * The inverse of the edge matrix E = (p1 - p0, p2 - p0, p3 - p0) (columns);
+ * false when the tetrahedron is flat (|det E| <= 1e-14 max|E_ij|^3).
+ */
+bool InvertEdges(const Vec3 p[4], glm::dmat3& inverse);
 
 // The piece of the ray origin + t direction (t >= 0) inside the tetrahedron.
 bool ClipRay(const Tetrahedron& tet, const Vec3& origin, const Vec3& direction, Segment& out);

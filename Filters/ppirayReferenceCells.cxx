@@ -37,7 +37,7 @@ ReferenceCells CollectCells(vtkUnstructuredGrid* grid)
   {
     const int type = static_cast<int>(unsupported[u]);
     if (type != VTK_QUADRATIC_TETRA && type != VTK_LAGRANGE_TETRAHEDRON &&
-      type != VTK_BEZIER_TETRAHEDRON)
+        type != VTK_BEZIER_TETRAHEDRON)
     {
       continue;
     }
@@ -62,7 +62,7 @@ ReferenceCells CollectCells(vtkUnstructuredGrid* grid)
     {
       const int type = grid->GetCellType(c);
       if (type == VTK_TETRA || type == VTK_QUADRATIC_TETRA || type == VTK_LAGRANGE_TETRAHEDRON ||
-        type == VTK_BEZIER_TETRAHEDRON)
+          type == VTK_BEZIER_TETRAHEDRON)
       {
         continue;
       }
@@ -111,7 +111,8 @@ void ScreenTiles::Build(vtkUnstructuredGrid* grid, const ReferenceCells& cells,
   this->TilesX = tilesX;
   this->TilesY = tilesY;
   // Tile range (x0, x1, y0, y1) of item t.
-  auto tileRange = [&](vtkIdType t, int range[4]) {
+  auto tileRange = [&](vtkIdType t, int range[4])
+  {
     double lo[2] = { 1e300, 1e300 }, hi[2] = { -1e300, -1e300 };
     vtkIdType itemSize = 0;
     const vtkIdType* itemPoints = cells.ItemPoints(t, itemSize);

@@ -37,7 +37,7 @@ struct TransferFunction
   vtkPiecewiseFunction* Opacity = nullptr;
   double UnitDistance = 1.0;
   std::vector<double> Breaks;
-  std::vector<RGBTau> Start, End; // piece k: from Breaks[k] to Breaks[k + 1]
+  std::vector<RGBTau> Start, End;                        // piece k: from Breaks[k] to Breaks[k + 1]
   RGBTau Below = { 0, 0, 0, 0 }, Above = { 0, 0, 0, 0 }; // outside the breaks
   // The CIEDE2000 colour space costs a colour-path search per GetTable call
   // and steps its colours by about 1/255: sampled once over its nodes (2^18
@@ -103,7 +103,7 @@ struct TransferFunction
       this->UnitDistance = 1.0;
     }
     if (this->Color && this->Color->GetColorSpace() == VTK_CTF_LAB_CIEDE2000 &&
-      this->Color->GetScale() == VTK_CTF_LINEAR && this->Color->GetSize() > 1)
+        this->Color->GetScale() == VTK_CTF_LINEAR && this->Color->GetSize() > 1)
     {
       this->Color->GetRange(this->SteppedRange);
       this->Stepped.resize(3 << 18);
@@ -112,14 +112,17 @@ struct TransferFunction
       tolerance = std::max(tolerance, 0.25 / 255);
     }
     std::vector<double> nodes;
-    auto collect = [&](int size, auto x) {
+    auto collect = [&](int size, auto x)
+    {
       for (int i = 0; i < size; ++i)
       {
         nodes.push_back(x(i));
       }
     };
-    auto piecewise = [](vtkPiecewiseFunction* f) {
-      return [f](int i) {
+    auto piecewise = [](vtkPiecewiseFunction* f)
+    {
+      return [f](int i)
+      {
         double v[4];
         f->GetNodeValue(i, v);
         return v[0];
@@ -128,11 +131,13 @@ struct TransferFunction
     collect(this->Opacity->GetSize(), piecewise(this->Opacity));
     if (this->Color)
     {
-      collect(this->Color->GetSize(), [this](int i) {
-        double v[6];
-        this->Color->GetNodeValue(i, v);
-        return v[0];
-      });
+      collect(this->Color->GetSize(),
+        [this](int i)
+        {
+          double v[6];
+          this->Color->GetNodeValue(i, v);
+          return v[0];
+        });
     }
     else if (this->Gray)
     {
@@ -150,7 +155,8 @@ struct TransferFunction
     this->Below = this->Sample(nodes.front() - inside, nodes.front() - inside, 2)[0];
     this->Above = this->Sample(nodes.back() + inside, nodes.back() + inside, 2)[0];
     // Piece [x0, x1] split until linear within tolerance at its quarter points.
-    auto bisect = [&](auto&& self, double x0, double x1) -> void {
+    auto bisect = [&](auto&& self, double x0, double x1) -> void
+    {
       const std::vector<RGBTau> v = this->Sample(x0, x1, 5);
       bool linear = true;
       for (int q = 1; q < 4; ++q)
@@ -158,8 +164,8 @@ struct TransferFunction
         for (int c = 0; c < 4; ++c)
         {
           const double scale = c == 3 ? 1.0 / this->UnitDistance : 1.0;
-          linear = linear &&
-            std::abs(v[q][c] - (v[0][c] + (v[4][c] - v[0][c]) * q / 4.0)) <= tolerance * scale;
+          linear = linear && std::abs(v[q][c] - (v[0][c] + (v[4][c] - v[0][c]) * q / 4.0)) <=
+                               tolerance * scale;
         }
       }
       if (linear || x1 - x0 <= 4 * inside)
@@ -194,8 +200,9 @@ struct TransferFunction
   // above the last).
   int Piece(double s) const
   {
-    return static_cast<int>(std::upper_bound(this->Breaks.begin(), this->Breaks.end(), s) -
-             this->Breaks.begin()) - 1;
+    return static_cast<int>(
+             std::upper_bound(this->Breaks.begin(), this->Breaks.end(), s) - this->Breaks.begin()) -
+           1;
   }
 
   // rgb and tau at s, on piece k (the linear interpolant of its limits).

@@ -14,7 +14,7 @@ constexpr double SqrtPi = 1.7724538509055160273;
 // sum_k (-a)^k / (k! (n + k + 1)) for small a (to the first term below
 // 1e-17 of the sum: all later ones are smaller), else the upward recurrence
 // J_n = (n J_{n-1} - e^{-a}) / a from J_0 = (1 - e^{-a}) / a.
-template <int N>
+template<int N>
 void MomentsOfExponential(double a, double (&j)[N])
 {
   if (a < 1.0)

@@ -1,15 +1,15 @@
 #include "vtkHexahedralCellTextures.h"
 
+#include "ppirayConformingTetrahedra.h"
 #include "ppirayInvertedSheets.h"
+#include "ppirayMeshLocalFrame.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellType.h"
-#include "ppirayConformingTetrahedra.h"
 #include "vtkDataArray.h"
 #include "vtkHexahedron.h"
 #include "vtkHexahedronCoefficients.h"
 #include "vtkMath.h"
-#include "ppirayMeshLocalFrame.h"
 #include "vtkObjectFactory.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
@@ -130,8 +130,7 @@ bool IsFlat(const double* local, const vtkIdType c[8])
   {
     for (int j = 0; j < i; ++j)
     {
-      size = std::max(size,
-        vtkMath::Distance2BetweenPoints(local + 3 * c[i], local + 3 * c[j]));
+      size = std::max(size, vtkMath::Distance2BetweenPoints(local + 3 * c[i], local + 3 * c[j]));
     }
   }
   size = std::sqrt(size);
@@ -204,20 +203,22 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     return false;
   }
   // Hexahedra, in VTK_HEXAHEDRON order.
-  ppiray::ForEachCell(grid, [&](vtkIdType cellId, int type, vtkIdType npts, const vtkIdType* pts) {
-    const ppiray::LinearShape shape = ppiray::LinearShapeOf(type);
-    if (shape.Type != VTK_HEXAHEDRON || npts < 8)
+  ppiray::ForEachCell(grid,
+    [&](vtkIdType cellId, int type, vtkIdType npts, const vtkIdType* pts)
     {
-      ++this->NumberOfOtherCells;
-      return;
-    }
-    this->NumberOfQuadraticCells += shape.HigherOrder ? 1 : 0;
-    this->CellIds.push_back(cellId);
-    for (int i = 0; i < 8; ++i)
-    {
-      this->CornerIds.push_back(pts[ppiray::HexahedronCorner(type, i)]);
-    }
-  });
+      const ppiray::LinearShape shape = ppiray::LinearShapeOf(type);
+      if (shape.Type != VTK_HEXAHEDRON || npts < 8)
+      {
+        ++this->NumberOfOtherCells;
+        return;
+      }
+      this->NumberOfQuadraticCells += shape.HigherOrder ? 1 : 0;
+      this->CellIds.push_back(cellId);
+      for (int i = 0; i < 8; ++i)
+      {
+        this->CornerIds.push_back(pts[ppiray::HexahedronCorner(type, i)]);
+      }
+    });
   if (this->CellIds.empty() || this->NumberOfOtherCells > 0)
   {
     return false; // only counted: the textures describe meshes of hexahedra only
@@ -319,8 +320,8 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
       const vtkIdType* q = vtkHexahedron::GetFaceArray(f);
       FaceKey& key = faces[6 * h + f];
       key.Ids = { c[q[0]], c[q[1]], c[q[2]], c[q[3]] };
-      mask |= diagonals.AlongFirstDiagonal(key.Ids[0], key.Ids[1], key.Ids[2], key.Ids[3]) ? 0
-                                                                                        : 1 << f;
+      mask |=
+        diagonals.AlongFirstDiagonal(key.Ids[0], key.Ids[1], key.Ids[2], key.Ids[3]) ? 0 : 1 << f;
       std::sort(key.Ids.begin(), key.Ids.end());
       key.Owner = 6 * h + f;
     }
@@ -419,7 +420,7 @@ bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScala
   this->Coefficients.assign(8 * numberOfHexahedra, 0.0f);
   this->NumberOfNaNScalars = 0;
   if (!scalars || numberOfHexahedra == 0 || component < 0 ||
-    component >= scalars->GetNumberOfComponents())
+      component >= scalars->GetNumberOfComponents())
   {
     return false;
   }

@@ -92,10 +92,7 @@ public:
   /** 8 floats per hexahedron (2 RGBA texels). */
   const std::vector<float>& GetCoefficients() const { return this->Coefficients; }
   const std::vector<float>& GetBoundaryPoints() const { return this->BoundaryPoints; }
-  const std::vector<unsigned int>& GetBoundaryTriangles() const
-  {
-    return this->BoundaryTriangles;
-  }
+  const std::vector<unsigned int>& GetBoundaryTriangles() const { return this->BoundaryTriangles; }
   /** Per boundary triangle: 12 h + 2 f + t (t: first or second triangle of face f). */
   const std::vector<int>& GetBoundaryFaces() const { return this->BoundaryFaces; }
 

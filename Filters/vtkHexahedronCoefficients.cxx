@@ -31,8 +31,8 @@ vtkStandardNewMacro(vtkHexahedronCoefficients);
 namespace
 {
 // See vtkHexahedronCoefficients::CornerNeighbor.
-const int CornerFrames[8][3] = { { 1, 3, 4 }, { 2, 0, 5 }, { 3, 1, 6 }, { 0, 2, 7 },
-  { 7, 5, 0 }, { 4, 6, 1 }, { 5, 7, 2 }, { 6, 4, 3 } };
+const int CornerFrames[8][3] = { { 1, 3, 4 }, { 2, 0, 5 }, { 3, 1, 6 }, { 0, 2, 7 }, { 7, 5, 0 },
+  { 4, 6, 1 }, { 5, 7, 2 }, { 6, 4, 3 } };
 
 // Distance between the lines of a quadrilateral's diagonals q0q2 and q1q3,
 // relative to the longer diagonal: |(q1 - q0) . (d1 x d2)| / |d1 x d2| / max|d|.
@@ -99,7 +99,7 @@ double vtkHexahedronCoefficients::EvaluateField(const double c[8], const double 
 {
   const double u = uvw[0], v = uvw[1], w = uvw[2];
   return c[0] + c[1] * u + c[2] * v + c[3] * w + c[4] * u * v + c[5] * v * w + c[6] * u * w +
-    c[7] * u * v * w;
+         c[7] * u * v * w;
 }
 
 //------------------------------------------------------------------------------
@@ -237,10 +237,12 @@ int vtkHexahedronCoefficients::RequestData(
   // Point ids of every cell, for random access in parallel.
   std::vector<vtkIdType> offsets(numberOfCells + 1, 0), ids;
   ids.reserve(8 * numberOfCells);
-  ppiray::ForEachCell(input, [&](vtkIdType cellId, int, vtkIdType npts, const vtkIdType* pts) {
-    ids.insert(ids.end(), pts, pts + npts);
-    offsets[cellId + 1] = static_cast<vtkIdType>(ids.size());
-  });
+  ppiray::ForEachCell(input,
+    [&](vtkIdType cellId, int, vtkIdType npts, const vtkIdType* pts)
+    {
+      ids.insert(ids.end(), pts, pts + npts);
+      offsets[cellId + 1] = static_cast<vtkIdType>(ids.size());
+    });
 
   vtkPoints* points = input->GetPoints();
   const vtkIdType block = 65536;
@@ -254,7 +256,7 @@ int vtkHexahedronCoefficients::RequestData(
       int flags = NOT_A_HEXAHEDRON;
       const int type = input->GetCellType(cellId);
       if (ppiray::LinearShapeOf(type).Type == VTK_HEXAHEDRON &&
-        offsets[cellId + 1] - offsets[cellId] >= 8)
+          offsets[cellId + 1] - offsets[cellId] >= 8)
       {
         const vtkIdType* pts = ids.data() + offsets[cellId];
         double corners[8][3], values[8];

@@ -10,8 +10,11 @@
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridCellAdjacency.h"
 
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/vec3.hpp>
+
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -20,22 +23,8 @@ vtkStandardNewMacro(vtkTetrahedralCellTextures);
 
 namespace
 {
-using Vec3 = std::array<double, 3>;
-
-Vec3 Sub(const double* a, const double* b)
-{
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-
-Vec3 Cross(const Vec3& a, const Vec3& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
-
-double Dot(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+using glm::dvec3;
+using glm::make_vec3;
 
 // A tetrahedron is treated as flat when |6V| <= eps * L^3, L its longest edge:
 // its face planes are then not a partition of space a ray can march through.
@@ -48,11 +37,10 @@ double LongestEdge(const double* p[4])
   {
     for (int j = i + 1; j < 4; ++j)
     {
-      const Vec3 e = Sub(p[j], p[i]);
-      longest = std::max(longest, Dot(e, e));
+      longest = std::max(longest, glm::length(make_vec3(p[j]) - make_vec3(p[i])));
     }
   }
-  return std::sqrt(longest);
+  return longest;
 }
 }
 
@@ -129,22 +117,16 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     }
     for (int f = 0; f < 4; ++f)
     {
-      const double* a = p[vtkUnstructuredGridCellAdjacency::FaceVertex(f, 0)];
-      const double* b = p[vtkUnstructuredGridCellAdjacency::FaceVertex(f, 1)];
-      const double* c = p[vtkUnstructuredGridCellAdjacency::FaceVertex(f, 2)];
-      Vec3 n = Cross(Sub(b, a), Sub(c, a));
-      const double length = std::sqrt(Dot(n, n)) * sign;
-      for (double& x : n)
-      {
-        x /= length;
-      }
-      const Vec3 centroid = { (a[0] + b[0] + c[0]) / 3.0, (a[1] + b[1] + c[1]) / 3.0,
-        (a[2] + b[2] + c[2]) / 3.0 };
+      // Outward unit normal n and d = n . x on the face (at its centroid).
+      const dvec3 a = make_vec3(p[vtkUnstructuredGridCellAdjacency::FaceVertex(f, 0)]);
+      const dvec3 b = make_vec3(p[vtkUnstructuredGridCellAdjacency::FaceVertex(f, 1)]);
+      const dvec3 c = make_vec3(p[vtkUnstructuredGridCellAdjacency::FaceVertex(f, 2)]);
+      const dvec3 n = sign * glm::normalize(glm::cross(b - a, c - a));
       float* plane = this->FacePlanes.data() + 16 * t + 4 * f;
-      plane[0] = static_cast<float>(n[0]);
-      plane[1] = static_cast<float>(n[1]);
-      plane[2] = static_cast<float>(n[2]);
-      plane[3] = static_cast<float>(Dot(n, centroid));
+      plane[0] = static_cast<float>(n.x);
+      plane[1] = static_cast<float>(n.y);
+      plane[2] = static_cast<float>(n.z);
+      plane[3] = static_cast<float>(glm::dot(n, (a + b + c) / 3.0));
     }
   }
   this->NumberOfDegenerateTetrahedra = degenerate.load();
@@ -179,7 +161,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
       vtkUnstructuredGridCellAdjacency::FaceVertex(f, 1),
       vtkUnstructuredGridCellAdjacency::FaceVertex(f, 2) };
     if (orientation[t] < 0 ||
-      (this->Degenerate[t] && this->FacesTowards(t, corner, neighbors, neighborFaces)))
+        (this->Degenerate[t] && this->FacesTowards(t, corner, neighbors, neighborFaces)))
     {
       std::swap(corner[1], corner[2]);
     }
@@ -240,7 +222,7 @@ bool vtkTetrahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScal
   this->Field.assign(4 * numberOfTets, 0.0f);
   this->NumberOfNaNScalars = 0;
   if (!scalars || numberOfTets == 0 || component < 0 ||
-    component >= scalars->GetNumberOfComponents())
+      component >= scalars->GetNumberOfComponents())
   {
     return false;
   }
@@ -281,19 +263,15 @@ bool vtkTetrahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScal
       ++nanCells;
       continue;
     }
-    const Vec3 r1 = Sub(p[1], p[0]), r2 = Sub(p[2], p[0]), r3 = Sub(p[3], p[0]);
-    const Vec3 c23 = Cross(r2, r3), c31 = Cross(r3, r1), c12 = Cross(r1, r2);
-    const double det = Dot(r1, c23);
-    const double ds[3] = { s[1] - s[0], s[2] - s[0], s[3] - s[0] };
-    Vec3 g;
-    for (int i = 0; i < 3; ++i)
-    {
-      g[i] = (ds[0] * c23[i] + ds[1] * c31[i] + ds[2] * c12[i]) / det;
-    }
-    const double s0 = s[0] - (g[0] * p[0][0] + g[1] * p[0][1] + g[2] * p[0][2]);
-    field[0] = static_cast<float>(g[0]);
-    field[1] = static_cast<float>(g[1]);
-    field[2] = static_cast<float>(g[2]);
+    const dvec3 p0 = make_vec3(p[0]);
+    const dvec3 r1 = make_vec3(p[1]) - p0, r2 = make_vec3(p[2]) - p0, r3 = make_vec3(p[3]) - p0;
+    const dvec3 c23 = glm::cross(r2, r3), c31 = glm::cross(r3, r1), c12 = glm::cross(r1, r2);
+    const dvec3 g =
+      ((s[1] - s[0]) * c23 + (s[2] - s[0]) * c31 + (s[3] - s[0]) * c12) / glm::dot(r1, c23);
+    const double s0 = s[0] - glm::dot(g, p0);
+    field[0] = static_cast<float>(g.x);
+    field[1] = static_cast<float>(g.y);
+    field[2] = static_cast<float>(g.z);
     field[3] = static_cast<float>(s0);
   }
   this->NumberOfNaNScalars = nanCells.load();

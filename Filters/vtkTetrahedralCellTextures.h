@@ -82,10 +82,7 @@ public:
   }
   ///@}
 
-  vtkIdType GetNumberOfTetrahedra() const
-  {
-    return static_cast<vtkIdType>(this->CellIds.size());
-  }
+  vtkIdType GetNumberOfTetrahedra() const { return static_cast<vtkIdType>(this->CellIds.size()); }
   /** Cell id in the input grid of each tetrahedron. */
   const std::vector<vtkIdType>& GetCellIds() const { return this->CellIds; }
   /** Centre of the bounds: all coordinates below are relative to it. */
@@ -106,10 +103,7 @@ public:
   /** Boundary points, 3 floats each (relative to GetOrigin()). */
   const std::vector<float>& GetBoundaryPoints() const { return this->BoundaryPoints; }
   /** Boundary triangles, 3 indices into GetBoundaryPoints(), wound outward. */
-  const std::vector<unsigned int>& GetBoundaryTriangles() const
-  {
-    return this->BoundaryTriangles;
-  }
+  const std::vector<unsigned int>& GetBoundaryTriangles() const { return this->BoundaryTriangles; }
   /** Per boundary triangle: 4 * tetrahedron + local face. */
   const std::vector<int>& GetBoundaryFaces() const { return this->BoundaryFaces; }
 

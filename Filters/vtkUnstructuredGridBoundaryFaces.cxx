@@ -1,8 +1,8 @@
 #include "vtkUnstructuredGridBoundaryFaces.h"
 
+#include "ppirayConformingTetrahedra.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "ppirayConformingTetrahedra.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"

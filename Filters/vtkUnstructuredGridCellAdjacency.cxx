@@ -55,8 +55,8 @@ int Side(const vtkIdType* tets, vtkIdType t, int f, const FaceKey& key, const do
   {
     return 0;
   }
-  const double volume6 = vtkUnstructuredGridCellAdjacency::SignedVolume6(points + 3 * key[0],
-    points + 3 * key[1], points + 3 * key[2], points + 3 * tets[4 * t + f]);
+  const double volume6 = vtkUnstructuredGridCellAdjacency::SignedVolume6(
+    points + 3 * key[0], points + 3 * key[1], points + 3 * key[2], points + 3 * tets[4 * t + f]);
   return volume6 > 0 ? 1 : (volume6 < 0 ? -1 : 0);
 }
 
@@ -75,7 +75,8 @@ void PairFace(const std::vector<FaceEntry>& e, std::vector<int>& partner, std::v
   {
     (e[i].Flat ? flat : (e[i].Side > 0 ? plus : (e[i].Side < 0 ? minus : rest))).push_back(i);
   }
-  auto link = [&](int a, int b) {
+  auto link = [&](int a, int b)
+  {
     partner[a] = b;
     partner[b] = a;
   };
@@ -129,7 +130,7 @@ double vtkUnstructuredGridCellAdjacency::SignedVolume6(
   const double b[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
   const double c[3] = { p3[0] - p0[0], p3[1] - p0[1], p3[2] - p0[2] };
   return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-    a[2] * (b[0] * c[1] - b[1] * c[0]);
+         a[2] * (b[0] * c[1] - b[1] * c[0]);
 }
 
 //------------------------------------------------------------------------------
@@ -224,7 +225,7 @@ void vtkUnstructuredGridCellAdjacency::Build(vtkIdType numberOfPoints, const vtk
           this->Neighbors[4 * t + f] = mate.Tet;
           this->NeighborFaces[4 * t + f] = static_cast<signed char>(mate.Face);
           if (!entries[self].Flat && !mate.Flat && entries[self].Side != 0 &&
-            entries[self].Side == mate.Side)
+              entries[self].Side == mate.Side)
           {
             this->Folded[4 * t + f] = 1;
             ++folded;
@@ -242,10 +243,11 @@ void vtkUnstructuredGridCellAdjacency::Build(vtkIdType numberOfPoints, const vtk
     this->Inverted = ppiray::InvertedSheets(
       numberOfTets, 4, [&](vtkIdType t, int f) { return this->Neighbors[4 * t + f]; },
       [&](vtkIdType t, int f) { return this->Folded[4 * t + f] != 0; },
-      [&](vtkIdType t) {
+      [&](vtkIdType t)
+      {
         const vtkIdType* tet = tets + 4 * t;
-        return std::abs(SignedVolume6(points + 3 * tet[0], points + 3 * tet[1],
-          points + 3 * tet[2], points + 3 * tet[3]));
+        return std::abs(SignedVolume6(
+          points + 3 * tet[0], points + 3 * tet[1], points + 3 * tet[2], points + 3 * tet[3]));
       });
   }
   else
@@ -258,8 +260,8 @@ void vtkUnstructuredGridCellAdjacency::Build(vtkIdType numberOfPoints, const vtk
   this->BoundaryFaces.clear();
   for (vtkIdType t = 0; t < numberOfTets; ++t)
   {
-    const bool detached = hiddenFace[4 * t] || hiddenFace[4 * t + 1] || hiddenFace[4 * t + 2] ||
-      hiddenFace[4 * t + 3];
+    const bool detached =
+      hiddenFace[4 * t] || hiddenFace[4 * t + 1] || hiddenFace[4 * t + 2] || hiddenFace[4 * t + 3];
     for (int f = 0; f < 4; ++f)
     {
       if (this->Neighbors[4 * t + f] < 0 && !zeroArea[4 * t + f] && !detached)

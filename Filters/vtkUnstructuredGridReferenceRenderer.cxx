@@ -1,12 +1,18 @@
 #include "vtkUnstructuredGridReferenceRenderer.h"
 
+#include "ppirayConformingTetrahedra.h"
+#include "ppirayIsoSurfaces.h"
+#include "ppirayRayIntegrator.h"
+#include "ppirayRaySegments.h"
+#include "ppirayReferenceCells.h"
+#include "ppirayReferenceTransferFunction.h"
+#include "ppirayVolumeIntegrals.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
+#include "vtkCellType.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkContourValues.h"
 #include "vtkDataArray.h"
-#include "vtkCellType.h"
-#include "ppirayConformingTetrahedra.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericCell.h"
 #include "vtkImageData.h"
@@ -23,12 +29,6 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridCellAdjacency.h"
-#include "ppirayIsoSurfaces.h"
-#include "ppirayRayIntegrator.h"
-#include "ppirayReferenceCells.h"
-#include "ppirayRaySegments.h"
-#include "ppirayReferenceTransferFunction.h"
-#include "ppirayVolumeIntegrals.h"
 #include "vtkVolumeProperty.h"
 
 #include <glm/geometric.hpp>
@@ -190,7 +190,8 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
     std::vector<double> values, weights, derivatives;
     Vec3 origin, direction;
     // The interpolated field's gradient in general cell c at the ray's t.
-    auto gradientAt = [&](vtkIdType c, double t) -> Vec3 {
+    auto gradientAt = [&](vtkIdType c, double t) -> Vec3
+    {
       if (cellScalars)
       {
         return { 0, 0, 0 };
@@ -221,16 +222,14 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
         localGeneral.push_back(static_cast<size_t>(t - numberOfTets));
         continue;
       }
-      double p[4][3];
+      Vec3 p[4];
       Tetrahedron tet;
       for (int v = 0; v < 4; ++v)
       {
         const vtkIdType id = cells.Tetrahedra[4 * t + v];
-        input->GetPoints()->GetPoint(id, p[v]);
-        for (int i = 0; i < 3; ++i)
-        {
-          p[v][i] -= centre[i];
-        }
+        double x[3];
+        input->GetPoints()->GetPoint(id, x);
+        p[v] = Vec3(x[0], x[1], x[2]) - centre;
         tet.S[v] = cellScalars ? scalars->GetComponent(cells.TetrahedronCell[t], 0)
                                : scalars->GetComponent(id, 0);
       }
@@ -238,7 +237,7 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
       {
         continue;
       }
-      tet.P0 = { p[0][0], p[0][1], p[0][2] };
+      tet.P0 = p[0];
       local.push_back(tet);
     }
     std::vector<Segment> segments;
@@ -246,8 +245,8 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
     {
       for (int px = tx * TileSize; px < std::min(width, (tx + 1) * TileSize); ++px)
       {
-        double ndcNear[4] = { 2.0 * (px + 0.5) / width - 1.0, 2.0 * (py + 0.5) / height - 1.0,
-          -1.0, 1.0 };
+        double ndcNear[4] = { 2.0 * (px + 0.5) / width - 1.0, 2.0 * (py + 0.5) / height - 1.0, -1.0,
+          1.0 };
         double ndcFar[4] = { ndcNear[0], ndcNear[1], 1.0, 1.0 };
         double nearPoint[4], farPoint[4];
         clipToWorld->MultiplyPoint(ndcNear, nearPoint);

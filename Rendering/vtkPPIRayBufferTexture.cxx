@@ -9,8 +9,8 @@ vtkPPIRayBufferTexture::vtkPPIRayBufferTexture() = default;
 vtkPPIRayBufferTexture::~vtkPPIRayBufferTexture() = default;
 
 //------------------------------------------------------------------------------
-bool vtkPPIRayBufferTexture::Upload(vtkOpenGLRenderWindow* context, const void* data,
-  size_t texels, int components, int vtkType)
+bool vtkPPIRayBufferTexture::Upload(
+  vtkOpenGLRenderWindow* context, const void* data, size_t texels, int components, int vtkType)
 {
   this->ReleaseGraphicsResources(context);
   const size_t valueSize = 4; // float and int32
@@ -19,8 +19,8 @@ bool vtkPPIRayBufferTexture::Upload(vtkOpenGLRenderWindow* context, const void* 
   {
     return false;
   }
-  if (!this->Buffer->Upload(static_cast<const char*>(data), bytes,
-        vtkOpenGLBufferObject::TextureBuffer))
+  if (!this->Buffer->Upload(
+        static_cast<const char*>(data), bytes, vtkOpenGLBufferObject::TextureBuffer))
   {
     return false;
   }

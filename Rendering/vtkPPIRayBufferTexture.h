@@ -9,9 +9,9 @@
 #ifndef vtkPPIRayBufferTexture_h
 #define vtkPPIRayBufferTexture_h
 
-#include "vtkNew.h"    // for vtkNew
-#include "vtkType.h"   // for vtkIdType
-#include <cstddef>     // for size_t
+#include "vtkNew.h"  // for vtkNew
+#include "vtkType.h" // for vtkIdType
+#include <cstddef>   // for size_t
 
 class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
@@ -28,8 +28,8 @@ public:
    * Upload `texels` texels of `components` (1 or 4) values of `vtkType`
    * (VTK_FLOAT or VTK_INT; integers are read with an isamplerBuffer).
    */
-  bool Upload(vtkOpenGLRenderWindow* context, const void* data, size_t texels, int components,
-    int vtkType);
+  bool Upload(
+    vtkOpenGLRenderWindow* context, const void* data, size_t texels, int components, int vtkType);
 
   vtkTextureObject* GetTexture() { return this->Texture; }
   size_t GetBytes() const { return this->Bytes; }

@@ -26,7 +26,8 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
        << "const int NEIGHBOR_TEXELS = " << layout.NeighborTexels << ";\n"
        << "const int FIELD_TEXELS = " << layout.FieldTexels << ";\n"
        << "const int FACES = " << layout.Faces << ";\n"
-       << "const int TURN_BACK = " << layout.TurnBack << ";\n"
+       << "const int TURN_BACK = " << layout.TurnBack
+       << ";\n"
        // Markers are compared against half their value: no real value comes near.
        << "const float FLAT_CELL = " << 0.5 * layout.FlatCellMarker << ";\n"
        << "const float EMPTY_CELL = " << 0.5 * layout.EmptyCellOffset << ";\n";
@@ -50,10 +51,10 @@ void vtkPPIRayCellBuffers::ReportFoldedFaces(vtkIdType folded, vtkObject* report
 {
   if (folded > 0)
   {
-    vtkWarningWithObjectMacro(reporter,
-      << folded << " faces join two " << this->GetCellName()
-      << " on the same side (inverted cells, a tangled mesh): each stretch of a ray is "
-         "integrated once.");
+    vtkWarningWithObjectMacro(
+      reporter, << folded << " faces join two " << this->GetCellName()
+                << " on the same side (inverted cells, a tangled mesh): each stretch of a ray is "
+                   "integrated once.");
   }
 }
 
@@ -65,8 +66,9 @@ bool vtkPPIRayCellBuffers::Upload(vtkOpenGLRenderWindow* context, vtkObject* rep
   const Arrays arrays = this->GetArrays();
   if (!this->GeometryOnGPU)
   {
-    const bool ok = this->Geometry.Upload(context, arrays.Geometry.data(),
-                      layout.GeometryTexels * cells, 4, VTK_FLOAT) &&
+    const bool ok =
+      this->Geometry.Upload(
+        context, arrays.Geometry.data(), layout.GeometryTexels * cells, 4, VTK_FLOAT) &&
       this->Neighbors.Upload(
         context, arrays.Neighbors.data(), layout.NeighborTexels * cells, 4, VTK_INT) &&
       this->BoundaryFaces.Upload(
@@ -81,14 +83,13 @@ bool vtkPPIRayCellBuffers::Upload(vtkOpenGLRenderWindow* context, vtkObject* rep
       return false;
     }
     this->BoundaryBytes = sizeof(float) * arrays.BoundaryPoints.size() +
-      sizeof(unsigned int) * arrays.BoundaryTriangles.size();
+                          sizeof(unsigned int) * arrays.BoundaryTriangles.size();
     this->GeometryOnGPU = true;
     ++this->GeometryUploadCount;
   }
   if (!this->FieldOnGPU)
   {
-    if (!this->Field.Upload(
-          context, arrays.Field.data(), layout.FieldTexels * cells, 4, VTK_FLOAT))
+    if (!this->Field.Upload(context, arrays.Field.data(), layout.FieldTexels * cells, 4, VTK_FLOAT))
     {
       vtkErrorWithObjectMacro(reporter, "Could not upload the scalar field to the GPU.");
       return false;
@@ -119,7 +120,7 @@ void vtkPPIRayCellBuffers::Bind(vtkShaderProgram* program, std::vector<vtkTextur
 size_t vtkPPIRayCellBuffers::GetGPUBytes() const
 {
   return this->Geometry.GetBytes() + this->Neighbors.GetBytes() + this->Field.GetBytes() +
-    this->BoundaryFaces.GetBytes() + this->BoundaryBytes;
+         this->BoundaryFaces.GetBytes() + this->BoundaryBytes;
 }
 
 //------------------------------------------------------------------------------

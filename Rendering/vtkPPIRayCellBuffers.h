@@ -129,9 +129,9 @@ protected:
     const std::vector<float>& Geometry;
     const std::vector<int>& Neighbors;
     const std::vector<float>& Field;
-    const std::vector<float>& BoundaryPoints;          // 3 per point
+    const std::vector<float>& BoundaryPoints;           // 3 per point
     const std::vector<unsigned int>& BoundaryTriangles; // 3 point indices each
-    const std::vector<int>& BoundaryFaces;             // per triangle: the cell and face
+    const std::vector<int>& BoundaryFaces;              // per triangle: the cell and face
   };
   virtual Arrays GetArrays() const = 0;
   // Builds the field texels; returns the number of cells touching a NaN value.

@@ -56,7 +56,7 @@ size_t vtkPPIRayDepthPeeling::GetGPUBytes() const
 {
   // entry id (R32F), 2 accumulated (RGBA32F), 2 exit (R32F), 3 depth (32F).
   return static_cast<size_t>(this->TargetSize[0]) * this->TargetSize[1] *
-    (4 + 2 * 16 + 2 * 4 + 3 * 4);
+         (4 + 2 * 16 + 2 * 4 + 3 * 4);
 }
 
 //------------------------------------------------------------------------------
@@ -95,12 +95,12 @@ bool vtkPPIRayDepthPeeling::Prepare(vtkOpenGLRenderWindow* context, int width, i
   if (this->TargetSize[0] != width || this->TargetSize[1] != height)
   {
     const bool ok = AllocateTarget(this->EntryTexture, context, width, height, 1) &&
-      AllocateTarget(this->Accumulated[0], context, width, height, 4) &&
-      AllocateTarget(this->Accumulated[1], context, width, height, 4) &&
-      AllocateTarget(this->Exit[0], context, width, height, 1) &&
-      AllocateTarget(this->Exit[1], context, width, height, 1) &&
-      AllocateDepthTarget(this->LayerDepth[0], context, width, height) &&
-      AllocateDepthTarget(this->LayerDepth[1], context, width, height);
+                    AllocateTarget(this->Accumulated[0], context, width, height, 4) &&
+                    AllocateTarget(this->Accumulated[1], context, width, height, 4) &&
+                    AllocateTarget(this->Exit[0], context, width, height, 1) &&
+                    AllocateTarget(this->Exit[1], context, width, height, 1) &&
+                    AllocateDepthTarget(this->LayerDepth[0], context, width, height) &&
+                    AllocateDepthTarget(this->LayerDepth[1], context, width, height);
     if (!ok)
     {
       vtkErrorWithObjectMacro(
@@ -131,12 +131,12 @@ bool vtkPPIRayDepthPeeling::Prepare(vtkOpenGLRenderWindow* context, int width, i
     return false;
   }
   if (this->EntryPoints != cells.GetBoundaryPoints() ||
-    this->EntryPointsUpload != cells.GetGeometryUploadCount())
+      this->EntryPointsUpload != cells.GetGeometryUploadCount())
   {
     // The vertex array reads the boundary points' buffer as it was bound.
     this->EntryVAO->Bind();
-    this->EntryVAO->AddAttributeArray(this->EntryProgram, cells.GetBoundaryPoints(), "vertexMC",
-      0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    this->EntryVAO->AddAttributeArray(this->EntryProgram, cells.GetBoundaryPoints(), "vertexMC", 0,
+      3 * sizeof(float), VTK_FLOAT, 3, false);
     this->EntryVAO->Release();
     this->EntryPoints = cells.GetBoundaryPoints();
     this->EntryPointsUpload = cells.GetGeometryUploadCount();
@@ -167,19 +167,19 @@ void vtkPPIRayDepthPeeling::CopyOpaqueDepth(
     GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
   glGetFramebufferAttachmentParameteriv(
     GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencil);
-  int format = stencil > 0 ? -1
-    : type == GL_FLOAT     ? vtkTextureObject::Float32
-    : bits >= 32           ? vtkTextureObject::Fixed32
-    : bits >= 24           ? vtkTextureObject::Fixed24
-                           : vtkTextureObject::Fixed16;
+  int format = stencil > 0        ? -1
+               : type == GL_FLOAT ? vtkTextureObject::Float32
+               : bits >= 32       ? vtkTextureObject::Fixed32
+               : bits >= 24       ? vtkTextureObject::Fixed24
+                                  : vtkTextureObject::Fixed16;
   if (bits == 0)
   {
     format = vtkTextureObject::Float32; // no depth buffer: nothing is opaque
   }
   const int width = frame.Width, height = frame.Height;
   if (this->OpaqueDepthFormat != format ||
-    this->OpaqueDepth->GetWidth() != static_cast<unsigned>(width) ||
-    this->OpaqueDepth->GetHeight() != static_cast<unsigned>(height))
+      this->OpaqueDepth->GetWidth() != static_cast<unsigned>(width) ||
+      this->OpaqueDepth->GetHeight() != static_cast<unsigned>(height))
   {
     this->OpaqueDepth->SetContext(context);
     this->OpaqueDepth->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -203,8 +203,8 @@ void vtkPPIRayDepthPeeling::CopyOpaqueDepth(
   bool copied = false;
   if (bits > 0)
   {
-    glBlitFramebuffer(frame.X0, frame.Y0, frame.X0 + width, frame.Y0 + height, 0, 0, width,
-      height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(frame.X0, frame.Y0, frame.X0 + width, frame.Y0 + height, 0, 0, width, height,
+      GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     copied = glGetError() == GL_NO_ERROR;
   }
   if (!copied)
@@ -214,8 +214,8 @@ void vtkPPIRayDepthPeeling::CopyOpaqueDepth(
     state->vtkglClear(GL_DEPTH_BUFFER_BIT);
     if (bits > 0)
     {
-      vtkWarningWithObjectMacro(reporter,
-        "Could not read the depth buffer (" << bits
+      vtkWarningWithObjectMacro(reporter, "Could not read the depth buffer ("
+                                            << bits
                                             << " bits): opaque geometry does not stop the rays.");
     }
   }
@@ -341,8 +341,7 @@ void vtkPPIRayDepthPeeling::March(
   context->GetShaderCache()->ReadyShaderProgram(program);
   std::vector<vtkTextureObject*> textures = { this->EntryTexture, this->OpaqueDepth,
     this->Accumulated[this->Current], this->Exit[this->Current] };
-  const char* names[] = { "entryTriangle", "opaqueDepth", "previousAccumulated",
-    "previousExit" };
+  const char* names[] = { "entryTriangle", "opaqueDepth", "previousAccumulated", "previousExit" };
   for (size_t i = 0; i < textures.size(); ++i)
   {
     textures[i]->Activate();

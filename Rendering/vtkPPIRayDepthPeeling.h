@@ -68,14 +68,14 @@ private:
     vtkObject* reporter);
   // VTK's depth (resolving multisampling) into a texture of the very same
   // format, as glBlitFramebuffer requires for depth.
-  void CopyOpaqueDepth(vtkOpenGLRenderWindow* context, int source, const Frame& frame,
-    vtkObject* reporter);
+  void CopyOpaqueDepth(
+    vtkOpenGLRenderWindow* context, int source, const Frame& frame, vtkObject* reporter);
   // The next layer of boundary triangles into EntryTexture; whether any
   // fragment entered.
-  bool Enter(vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayCellBuffers& cells,
-    int peel);
-  void March(vtkOpenGLRenderWindow* context, vtkOpenGLQuadHelper& march,
-    const MarchInputs& marchInputs);
+  bool Enter(
+    vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayCellBuffers& cells, int peel);
+  void March(
+    vtkOpenGLRenderWindow* context, vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs);
   void Composite(vtkOpenGLRenderWindow* context, const Frame& frame);
 
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;

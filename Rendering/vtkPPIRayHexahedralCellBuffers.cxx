@@ -56,10 +56,10 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
   }
   if (hexes.GetNumberOfOtherCells() > 0)
   {
-    vtkWarningWithObjectMacro(reporter,
-      << "Rendering hexahedra without subdivision needs a mesh of hexahedra only; "
-      << hexes.GetNumberOfOtherCells() << " other cells: splitting all "
-      << grid->GetNumberOfCells() << " cells into tetrahedra instead.");
+    vtkWarningWithObjectMacro(
+      reporter, << "Rendering hexahedra without subdivision needs a mesh of hexahedra only; "
+                << hexes.GetNumberOfOtherCells() << " other cells: splitting all "
+                << grid->GetNumberOfCells() << " cells into tetrahedra instead.");
     return BuildResult::Declined;
   }
   if (hexes.GetNumberOfFlatHexahedra() > 0)
@@ -69,19 +69,19 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
   }
   if (hexes.GetNumberOfSingularFrames() > 0)
   {
-    vtkWarningWithObjectMacro(reporter,
-      << hexes.GetNumberOfSingularFrames()
-      << " hexahedra have no frame at any corner (flat cells): splitting all "
-      << grid->GetNumberOfCells() << " cells into tetrahedra instead.");
+    vtkWarningWithObjectMacro(
+      reporter, << hexes.GetNumberOfSingularFrames()
+                << " hexahedra have no frame at any corner (flat cells): splitting all "
+                << grid->GetNumberOfCells() << " cells into tetrahedra instead.");
     return BuildResult::Declined;
   }
   if (6 * hexes.GetNumberOfHexahedra() > VTK_INT_MAX / 2 ||
-    hexes.GetBoundaryFaces().size() > (1u << 24))
+      hexes.GetBoundaryFaces().size() > (1u << 24))
   {
-    vtkErrorWithObjectMacro(reporter,
-      "Mesh too large: " << hexes.GetNumberOfHexahedra() << " hexahedra and "
-                         << hexes.GetBoundaryFaces().size()
-                         << " boundary triangles (limits 178956970 and 16777216).");
+    vtkErrorWithObjectMacro(
+      reporter, "Mesh too large: " << hexes.GetNumberOfHexahedra() << " hexahedra and "
+                                   << hexes.GetBoundaryFaces().size()
+                                   << " boundary triangles (limits 178956970 and 16777216).");
     return BuildResult::Failed;
   }
   if (hexes.GetNumberOfQuadraticCells() > 0)
@@ -93,9 +93,9 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
   }
   if (hexes.GetNumberOfNonManifoldFaces() > 0)
   {
-    vtkWarningWithObjectMacro(reporter,
-      << hexes.GetNumberOfNonManifoldFaces()
-      << " faces are shared by more than two hexahedra (non-manifold mesh).");
+    vtkWarningWithObjectMacro(
+      reporter, << hexes.GetNumberOfNonManifoldFaces()
+                << " faces are shared by more than two hexahedra (non-manifold mesh).");
   }
   this->ReportFoldedFaces(hexes.GetNumberOfFoldedFaces(), reporter);
   return BuildResult::Built;

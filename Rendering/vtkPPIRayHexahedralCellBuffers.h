@@ -27,18 +27,15 @@ public:
   BuildResult BuildGeometry(vtkUnstructuredGrid* grid, vtkObject* reporter) override;
   const double* GetOrigin() const override { return this->Cells->GetOrigin(); }
   vtkIdType GetNumberOfCells() const override { return this->Cells->GetNumberOfHexahedra(); }
-  double GetMaximumSegmentLength() const override
-  {
-    return this->Cells->GetMaximumCellDiameter();
-  }
+  double GetMaximumSegmentLength() const override { return this->Cells->GetMaximumCellDiameter(); }
   std::string GetMarchShader(int hexahedronMode) const override;
 
 protected:
   Arrays GetArrays() const override
   {
     const auto& c = *this->Cells;
-    return { c.GetCorners(), c.GetNeighbors(), c.GetCoefficients(), c.GetBoundaryPoints(), c.GetBoundaryTriangles(),
-      c.GetBoundaryFaces() };
+    return { c.GetCorners(), c.GetNeighbors(), c.GetCoefficients(), c.GetBoundaryPoints(),
+      c.GetBoundaryTriangles(), c.GetBoundaryFaces() };
   }
   vtkIdType ComputeField(vtkDataArray* values, bool cellData) override
   {

@@ -24,7 +24,7 @@ ppiray::IsoSurfaceMode vtkPPIRayIsoSurfaceUniforms::Update(
   if (mode != ppiray::NoIsoSurfaces && count > MaximumValues)
   {
     warning = std::to_string(count) + " isovalues; only the lowest " +
-      std::to_string(MaximumValues) + " are drawn.";
+              std::to_string(MaximumValues) + " are drawn.";
   }
   if (warning != this->Warning)
   {
@@ -42,8 +42,8 @@ ppiray::IsoSurfaceMode vtkPPIRayIsoSurfaceUniforms::Update(
 std::string vtkPPIRayIsoSurfaceUniforms::Declarations(ppiray::IsoSurfaceMode mode)
 {
   return "const int ISO_MODE = " + std::to_string(static_cast<int>(mode)) +
-    ";\nconst int MAXIMUM_ISO_VALUES = " + std::to_string(MaximumValues) +
-    ";\nconst int MAXIMUM_LIGHTS = " + std::to_string(MaximumLights) + ";";
+         ";\nconst int MAXIMUM_ISO_VALUES = " + std::to_string(MaximumValues) +
+         ";\nconst int MAXIMUM_LIGHTS = " + std::to_string(MaximumLights) + ";";
 }
 
 //------------------------------------------------------------------------------

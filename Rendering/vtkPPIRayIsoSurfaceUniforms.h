@@ -33,8 +33,8 @@ public:
    * mode and EmbedIsoSurfaces); a warning about what is not drawn as asked
    * is given once, until it changes. Returns the mode.
    */
-  ppiray::IsoSurfaceMode Update(vtkRenderer* renderer, vtkVolume* volume, int blendMode,
-    bool embed, vtkObject* reporter);
+  ppiray::IsoSurfaceMode Update(
+    vtkRenderer* renderer, vtkVolume* volume, int blendMode, bool embed, vtkObject* reporter);
   ppiray::IsoSurfaceMode GetMode() const { return this->Surfaces.Mode; }
 
   /** GLSL constants: ISO_MODE, MAXIMUM_ISO_VALUES, MAXIMUM_LIGHTS. */

@@ -1,6 +1,7 @@
 /**
  * @class   vtkPPIRayPeelingStateRAII
- * @brief   the OpenGL state a PPIRay frame changes, saved on construction and restored on destruction
+ * @brief   the OpenGL state a PPIRay frame changes, saved on construction and restored on
+ * destruction
  *
  * As VTK's vtkVolumeStateRAII: every state the peel loop and the composite
  * set (viewport, blending, depth test, mask and function, face culling and

@@ -21,9 +21,9 @@ vtkPPIRayScalarField::Status vtkPPIRayScalarField::Update(
   vtkDataSet* input, const Selection& selection, vtkObject* reporter)
 {
   int cellFlag = 0;
-  vtkDataArray* scalars = vtkDataArray::SafeDownCast(vtkAbstractMapper::GetScalars(input,
-    selection.ScalarMode, selection.ArrayAccessMode, selection.ArrayId, selection.ArrayName,
-    cellFlag));
+  vtkDataArray* scalars =
+    vtkDataArray::SafeDownCast(vtkAbstractMapper::GetScalars(input, selection.ScalarMode,
+      selection.ArrayAccessMode, selection.ArrayId, selection.ArrayName, cellFlag));
   if (!scalars)
   {
     if (!this->Reported)
@@ -40,10 +40,10 @@ vtkPPIRayScalarField::Status vtkPPIRayScalarField::Update(
   this->Reported = false;
   const int components = scalars->GetNumberOfComponents();
   const int component = components > 1 && selection.Magnitude
-    ? -1
-    : std::min(std::max(selection.Component, 0), components - 1);
+                          ? -1
+                          : std::min(std::max(selection.Component, 0), components - 1);
   if (this->Array == scalars && this->CellFlag == cellFlag && this->Component == component &&
-    scalars->GetMTime() <= this->Time.GetMTime())
+      scalars->GetMTime() <= this->Time.GetMTime())
   {
     return Status::Unchanged;
   }
@@ -62,9 +62,9 @@ vtkPPIRayScalarField::Status vtkPPIRayScalarField::Update(
   scalars->GetRange(range, component); // NaN left out; component -1: magnitude
   if (std::isinf(range[0]) || std::isinf(range[1]))
   {
-    vtkErrorWithObjectMacro(reporter,
-      "Scalar array " << (scalars->GetName() ? scalars->GetName() : "")
-                      << " has infinite values; nothing is rendered.");
+    vtkErrorWithObjectMacro(reporter, "Scalar array "
+                                        << (scalars->GetName() ? scalars->GetName() : "")
+                                        << " has infinite values; nothing is rendered.");
     this->Array = nullptr;
     return Status::Failed;
   }

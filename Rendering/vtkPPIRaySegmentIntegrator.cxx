@@ -49,8 +49,8 @@ public:
     }
     const std::vector<float>& table = vtkPsiTable::GetTable(inputs.PsiTableSize);
     LinearClamped(this->Texture, context);
-    this->Texture->Create2DFromRaw(inputs.PsiTableSize, inputs.PsiTableSize, 1, VTK_FLOAT,
-      const_cast<float*>(table.data()));
+    this->Texture->Create2DFromRaw(
+      inputs.PsiTableSize, inputs.PsiTableSize, 1, VTK_FLOAT, const_cast<float*>(table.data()));
     this->Size = inputs.PsiTableSize;
     return true;
   }
@@ -107,7 +107,7 @@ public:
   {
     const int n = inputs.PreIntegrationTableSize;
     if (this->Bytes && this->Table->GetScalarSize() == n &&
-      this->Time.GetMTime() > inputs.SourceTime)
+        this->Time.GetMTime() > inputs.SourceTime)
     {
       return true;
     }
@@ -118,7 +118,8 @@ public:
     if (!this->Texture->Create3DFromRaw(
           n, n, n, 4, VTK_FLOAT, const_cast<float*>(this->Table->GetTable().data())))
     {
-      vtkErrorWithObjectMacro(reporter, "Could not upload the " << n << "^3 pre-integration table.");
+      vtkErrorWithObjectMacro(
+        reporter, "Could not upload the " << n << "^3 pre-integration table.");
       this->Bytes = 0;
       return false;
     }

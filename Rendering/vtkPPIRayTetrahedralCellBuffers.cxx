@@ -49,8 +49,8 @@ std::string vtkPPIRayTetrahedralCellBuffers::GetMarchShader(int) const
   vtkShaderProgram::Substitute(march, "//PPIRay::MarchCommon::Impl", march_common_fs);
   const Features features = this->GetFeatures();
   vtkShaderProgram::Substitute(march, "//PPIRay::Cells::Dec",
-    this->LayoutDeclarations() + "const bool FLAT_CELLS = " +
-      (features.FlatCells ? "true" : "false") +
+    this->LayoutDeclarations() +
+      "const bool FLAT_CELLS = " + (features.FlatCells ? "true" : "false") +
       ";\nconst bool FOLDS = " + (features.Folds ? "true" : "false") + ";");
   return march;
 }
@@ -64,10 +64,10 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayTetrahedralCellBuffers::BuildGeometry
   vtkTetrahedralCellTextures& cells = *this->Cells;
   if (cells.GetNumberOfUnsupportedCells() > 0)
   {
-    vtkErrorWithObjectMacro(reporter,
-      "Skipped " << cells.GetNumberOfUnsupportedCells()
-                 << " cells that are not 3D cells with 4 to 8 corners: "
-                 << CellTypesMessage(cells.GetUnsupportedCellTypes()));
+    vtkErrorWithObjectMacro(reporter, "Skipped "
+                                        << cells.GetNumberOfUnsupportedCells()
+                                        << " cells that are not 3D cells with 4 to 8 corners: "
+                                        << CellTypesMessage(cells.GetUnsupportedCellTypes()));
   }
   if (cells.GetNumberOfQuadraticCells() > 0)
   {
@@ -82,19 +82,18 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayTetrahedralCellBuffers::BuildGeometry
     return BuildResult::Failed;
   }
   if (cells.GetNumberOfTetrahedra() > (VTK_INT_MAX / 4) ||
-    cells.GetBoundaryFaces().size() > (1u << 24))
+      cells.GetBoundaryFaces().size() > (1u << 24))
   {
-    vtkErrorWithObjectMacro(reporter,
-      "Mesh too large: " << cells.GetNumberOfTetrahedra() << " tetrahedra and "
-                         << cells.GetBoundaryFaces().size()
-                         << " boundary faces (limits 536870911 and 16777216).");
+    vtkErrorWithObjectMacro(
+      reporter, "Mesh too large: " << cells.GetNumberOfTetrahedra() << " tetrahedra and "
+                                   << cells.GetBoundaryFaces().size()
+                                   << " boundary faces (limits 536870911 and 16777216).");
     return BuildResult::Failed;
   }
   if (cells.GetNumberOfDegenerateTetrahedra() > 0)
   {
-    vtkWarningWithObjectMacro(reporter,
-      << cells.GetNumberOfDegenerateTetrahedra()
-      << " zero-volume tetrahedra: crossed with zero length.");
+    vtkWarningWithObjectMacro(reporter, << cells.GetNumberOfDegenerateTetrahedra()
+                                        << " zero-volume tetrahedra: crossed with zero length.");
   }
   if (cells.GetNumberOfNonManifoldFaces() > 0)
   {

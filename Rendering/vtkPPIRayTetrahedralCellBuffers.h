@@ -36,8 +36,8 @@ protected:
   Arrays GetArrays() const override
   {
     const auto& c = *this->Cells;
-    return { c.GetFacePlanes(), c.GetNeighbors(), c.GetField(), c.GetBoundaryPoints(), c.GetBoundaryTriangles(),
-      c.GetBoundaryFaces() };
+    return { c.GetFacePlanes(), c.GetNeighbors(), c.GetField(), c.GetBoundaryPoints(),
+      c.GetBoundaryTriangles(), c.GetBoundaryFaces() };
   }
   vtkIdType ComputeField(vtkDataArray* values, bool cellData) override
   {

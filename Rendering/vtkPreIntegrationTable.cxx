@@ -40,8 +40,8 @@ int Interval(vtkTransferFunctionControlPoints* cp, double s)
 // Exact premultiplied colour and opacity of a segment of length `length` from
 // sFront to sBack: split at the control points strictly between, each piece
 // I = C_f (1 - Psi) + C_b (Psi - zeta) (Moreland & Angel 2004, Sec. 4).
-RGBA IntegrateSegment(vtkTransferFunctionControlPoints* cp, double sFront, double sBack,
-  double length)
+RGBA IntegrateSegment(
+  vtkTransferFunctionControlPoints* cp, double sFront, double sBack, double length)
 {
   const auto& v = cp->GetValues();
   std::vector<double> cuts = { sFront };
@@ -85,8 +85,8 @@ RGBA IntegrateSegment(vtkTransferFunctionControlPoints* cp, double sFront, doubl
 }
 
 //------------------------------------------------------------------------------
-void vtkPreIntegrationTable::Build(vtkTransferFunctionControlPoints* cp, double sMin,
-  double sMax, double maximumLength, int scalarSize, int lengthSize)
+void vtkPreIntegrationTable::Build(vtkTransferFunctionControlPoints* cp, double sMin, double sMax,
+  double maximumLength, int scalarSize, int lengthSize)
 {
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
@@ -103,9 +103,8 @@ void vtkPreIntegrationTable::Build(vtkTransferFunctionControlPoints* cp, double 
   this->Table.assign(static_cast<size_t>(n) * n * m * 4, 0.0f);
   const double dl = maximumLength / (m - 1);
   auto scalar = [&](int i) { return sMin + (sMax - sMin) * i / (n - 1); };
-  auto at = [&](int i, int j, int k) -> float* {
-    return this->Table.data() + 4 * ((static_cast<size_t>(k) * n + j) * n + i);
-  };
+  auto at = [&](int i, int j, int k) -> float*
+  { return this->Table.data() + 4 * ((static_cast<size_t>(k) * n + j) * n + i); };
 
   // Slice 1: exact integrals over length dl (slice 0, length 0, stays zero).
 #pragma omp parallel for schedule(static)
@@ -120,12 +119,14 @@ void vtkPreIntegrationTable::Build(vtkTransferFunctionControlPoints* cp, double 
 
   // Linear interpolation in a slice along s_back (front on the grid) or along
   // s_front (back on the grid); x in texel units.
-  auto alongBack = [&](int i, double x, int k, int c) {
+  auto alongBack = [&](int i, double x, int k, int c)
+  {
     const int j = std::min(static_cast<int>(x), n - 2);
     const double w = x - j;
     return (1 - w) * at(i, j, k)[c] + w * at(i, j + 1, k)[c];
   };
-  auto alongFront = [&](double x, int j, int k, int c) {
+  auto alongFront = [&](double x, int j, int k, int c)
+  {
     const int i = std::min(static_cast<int>(x), n - 2);
     const double w = x - i;
     return (1 - w) * at(i, j, k)[c] + w * at(i + 1, j, k)[c];

@@ -111,9 +111,8 @@ double vtkPsiTable::Psi(double a, double b)
 double vtkPsiTable::PsiOfGamma(double gammaFront, double gammaBack)
 {
   // tau D = gamma / (1 - gamma), infinite at gamma = 1.
-  auto tauD = [](double gamma) {
-    return gamma >= 1.0 ? std::numeric_limits<double>::infinity() : gamma / (1.0 - gamma);
-  };
+  auto tauD = [](double gamma)
+  { return gamma >= 1.0 ? std::numeric_limits<double>::infinity() : gamma / (1.0 - gamma); };
   return Psi(tauD(gammaFront), tauD(gammaBack));
 }
 

@@ -81,7 +81,7 @@ struct TransferFunctions
   void SampleDensely()
   {
     if (!this->Color || this->Color->GetColorSpace() != VTK_CTF_LAB_CIEDE2000 ||
-      this->Color->GetScale() != VTK_CTF_LINEAR || this->Color->GetSize() < 2)
+        this->Color->GetScale() != VTK_CTF_LINEAR || this->Color->GetSize() < 2)
     {
       return;
     }
@@ -121,14 +121,17 @@ struct TransferFunctions
   std::vector<double> Nodes() const
   {
     std::vector<double> nodes;
-    auto collect = [&nodes](int size, auto x) {
+    auto collect = [&nodes](int size, auto x)
+    {
       for (int i = 0; i < size; ++i)
       {
         nodes.push_back(x(i));
       }
     };
-    auto piecewise = [](vtkPiecewiseFunction* f) {
-      return [f](int i) {
+    auto piecewise = [](vtkPiecewiseFunction* f)
+    {
+      return [f](int i)
+      {
         double v[4];
         f->GetNodeValue(i, v);
         return v[0];
@@ -137,11 +140,13 @@ struct TransferFunctions
     collect(this->Opacity->GetSize(), piecewise(this->Opacity));
     if (this->Color)
     {
-      collect(this->Color->GetSize(), [this](int i) {
-        double v[6];
-        this->Color->GetNodeValue(i, v);
-        return v[0];
-      });
+      collect(this->Color->GetSize(),
+        [this](int i)
+        {
+          double v[6];
+          this->Color->GetNodeValue(i, v);
+          return v[0];
+        });
     }
     else if (this->Gray)
     {
@@ -200,13 +205,13 @@ bool vtkTransferFunctionControlPoints::Build(vtkVolumeProperty* property, int co
     nodes.push_back(0.0);
   }
   // A jump is located to this width; narrower, two points are one step.
-  const double resolution =
-    1e-12 *
-    std::max({ nodes.back() - nodes.front(), std::abs(nodes.front()), std::abs(nodes.back()) });
+  const double resolution = 1e-12 * std::max({ nodes.back() - nodes.front(),
+                                      std::abs(nodes.front()), std::abs(nodes.back()) });
 
   std::vector<std::pair<double, Sample>> points;
   const size_t budget = static_cast<size_t>(this->MaximumNumberOfControlPoints);
-  auto add = [&](double x, const Sample& s) {
+  auto add = [&](double x, const Sample& s)
+  {
     if (points.size() < budget)
     {
       points.emplace_back(x, s);
@@ -219,7 +224,8 @@ bool vtkTransferFunctionControlPoints::Build(vtkVolumeProperty* property, int co
   // Bisect [x0, x1] (values a, b at its ends) until the chord is within
   // Tolerance of the function at seven interior points; adds interior points in
   // order. A jump inside is narrowed down to `resolution`.
-  auto refine = [&](auto&& self, double x0, const Sample& a, double x1, const Sample& b) -> void {
+  auto refine = [&](auto&& self, double x0, const Sample& a, double x1, const Sample& b) -> void
+  {
     const std::vector<Sample> inside = tf.Evaluate(x0, x1, 9);
     double distance = 0.0;
     for (int k = 1; k < 8; ++k)
@@ -258,7 +264,8 @@ bool vtkTransferFunctionControlPoints::Build(vtkVolumeProperty* property, int co
   }
   if (this->Truncated)
   {
-    vtkWarningMacro("The transfer function needs more than "
+    vtkWarningMacro(
+      "The transfer function needs more than "
       << budget << " control points to stay within " << tolerance
       << " of VTK's evaluation; the rest of its scalar range is linearly interpolated.");
   }

@@ -28,7 +28,8 @@
 
 vtkStandardNewMacro(vtkUnstructuredGridGPURayCastMapper);
 
-static_assert(int(vtkUnstructuredGridGPURayCastMapper::NO_ISOSURFACES) == ppiray::NoIsoSurfaces &&
+static_assert(
+  int(vtkUnstructuredGridGPURayCastMapper::NO_ISOSURFACES) == ppiray::NoIsoSurfaces &&
     int(vtkUnstructuredGridGPURayCastMapper::EMBEDDED_ISOSURFACES) == ppiray::EmbeddedIsoSurfaces &&
     int(vtkUnstructuredGridGPURayCastMapper::ISOSURFACES_ONLY) == ppiray::IsoSurfacesOnly,
   "one set of isosurface mode values");
@@ -116,7 +117,7 @@ vtkUnstructuredGridGPURayCastMapper::~vtkUnstructuredGridGPURayCastMapper() = de
 void vtkUnstructuredGridGPURayCastMapper::SetIntegrationMode(int mode)
 {
   if (mode != PARTIAL_PRE_INTEGRATION && mode != EXACT_LINEAR && mode != FULL_PRE_INTEGRATION &&
-    mode != AVERAGE_COLOR)
+      mode != AVERAGE_COLOR)
   {
     vtkErrorMacro("Unknown integration mode " << mode << "; keeping "
                                               << this->GetIntegrationModeAsString() << ".");
@@ -220,9 +221,9 @@ int vtkUnstructuredGridGPURayCastMapper::GetTransferFunctionUploadCount()
 vtkIdType vtkUnstructuredGridGPURayCastMapper::GetGPUMemorySize()
 {
   vtkInternals& in = *this->Internals;
-  const size_t bytes = (in.Cells ? in.Cells->GetGPUBytes() : 0) +
-    in.TransferFunction.GetGPUBytes() + (in.Integrator ? in.Integrator->GetGPUBytes() : 0) +
-    in.Peeling.GetGPUBytes();
+  const size_t bytes =
+    (in.Cells ? in.Cells->GetGPUBytes() : 0) + in.TransferFunction.GetGPUBytes() +
+    (in.Integrator ? in.Integrator->GetGPUBytes() : 0) + in.Peeling.GetGPUBytes();
   return static_cast<vtkIdType>(bytes);
 }
 
@@ -244,7 +245,7 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateCells(
     sourceTime, grid && grid->GetCells() ? grid->GetCells()->GetMTime() : input->GetMTime());
   const bool forHexahedra = this->HexahedronMode != HEXAHEDRON_SUBDIVIDE;
   if (in.CellsInput == input && sourceTime <= in.CellsTime.GetMTime() &&
-    in.CellsForHexahedra == forHexahedra)
+      in.CellsForHexahedra == forHexahedra)
   {
     return in.CellsValid;
   }
@@ -344,12 +345,12 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   const ppiray::IsoSurfaceMode isoMode =
     in.IsoSurfaces.Update(ren, vol, this->BlendMode, this->EmbedIsoSurfaces != 0, this);
   if (!this->UpdateCells(input, context) || !this->UpdateField(input) ||
-    !in.TransferFunction.Update(vol->GetProperty(), in.Field.GetShift(), this))
+      !in.TransferFunction.Update(vol->GetProperty(), in.Field.GetShift(), this))
   {
     return;
   }
   if (!in.Cells->Upload(context, this) || !in.TransferFunction.Upload(context, this) ||
-    !this->UpdateIntegrator(context))
+      !this->UpdateIntegrator(context))
   {
     return;
   }
@@ -359,9 +360,9 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   {
     return;
   }
-  vtkOpenGLQuadHelper* march = in.MarchShader.Ready(context,
-    in.Cells->GetMarchShader(this->HexahedronMode), in.Integrator->GetShaderCode(),
-    vtkPPIRayIsoSurfaceUniforms::Declarations(isoMode), this);
+  vtkOpenGLQuadHelper* march =
+    in.MarchShader.Ready(context, in.Cells->GetMarchShader(this->HexahedronMode),
+      in.Integrator->GetShaderCode(), vtkPPIRayIsoSurfaceUniforms::Declarations(isoMode), this);
   if (!march)
   {
     return;
@@ -386,13 +387,15 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   frame.TerminationAlpha = static_cast<float>(this->TerminationOpacity);
   frame.MaximumPeels = this->MaximumNumberOfPeels;
   const double cells = static_cast<double>(in.Cells->GetNumberOfCells());
-  const int maximumSteps = this->MaximumNumberOfSteps > 0
-    ? this->MaximumNumberOfSteps
-    : static_cast<int>(std::min(cells + 1.0, std::max(1024.0, 64.0 * std::cbrt(cells))));
+  const int maximumSteps =
+    this->MaximumNumberOfSteps > 0
+      ? this->MaximumNumberOfSteps
+      : static_cast<int>(std::min(cells + 1.0, std::max(1024.0, 64.0 * std::cbrt(cells))));
 
   // Peel: each march reads the cells, the transfer function, the integrator's
   // tables and the isosurfaces.
-  auto marchInputs = [&](vtkShaderProgram* program, std::vector<vtkTextureObject*>& textures) {
+  auto marchInputs = [&](vtkShaderProgram* program, std::vector<vtkTextureObject*>& textures)
+  {
     in.Cells->Bind(program, textures);
     in.TransferFunction.Bind(program, textures);
     in.Integrator->Bind(program, textures);
@@ -409,8 +412,9 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
     std::max(0, in.Peeling.Render(context, frame, *in.Cells, *march, marchInputs, cut, this));
   if (cut)
   {
-    vtkWarningMacro("Stopped after MaximumNumberOfPeels = "
-      << this->MaximumNumberOfPeels << " depth peels; parts of the mesh may be missing.");
+    vtkWarningMacro(
+      "Stopped after MaximumNumberOfPeels = " << this->MaximumNumberOfPeels
+                                              << " depth peels; parts of the mesh may be missing.");
   }
 }
 
@@ -432,6 +436,5 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "NumberOfPeels: " << this->NumberOfPeels << "\n";
   os << indent << "GeometryUploadCount: " << this->GetGeometryUploadCount() << "\n";
   os << indent << "FieldUploadCount: " << this->GetFieldUploadCount() << "\n";
-  os << indent << "TransferFunctionUploadCount: " << this->GetTransferFunctionUploadCount()
-     << "\n";
+  os << indent << "TransferFunctionUploadCount: " << this->GetTransferFunctionUploadCount() << "\n";
 }

@@ -6,23 +6,34 @@
 #   git worktree add /tmp/ppiray-a <commit> && (cd /tmp/ppiray-a && Module/run build)
 #   Module/run python Documentation/datasets/write_vtu.py /tmp/meshes
 #   xvfb-run -a -s "-screen 0 1920x1080x24" \
-#     Documentation/datasets/ab_frames.sh /tmp/ppiray-a/build build /tmp/meshes/*.vtu
+#     Documentation/datasets/ab_frames.sh /tmp/ppiray-a/build build /tmp/meshes/*.vtu wavelet:32
 #
-# Options by environment: ROUNDS (default 4), SIZE (512x512), VIEWS (8).
+# A mesh is a .vtu file, or wavelet:N (ppirayBenchmark's generated wavelet of
+# half extent N). Options by environment: ROUNDS (default 4), SIZE (512x512),
+# VIEWS (8), MAPPERS (ppiray; a comma-separated list of ppirayBenchmark's
+# mapper names, each timed on its own).
 set -euo pipefail
 a=$1
 b=$2
 shift 2
+IFS=, read -r -a mappers <<< "${MAPPERS:-ppiray}"
 for round in $(seq 1 "${ROUNDS:-4}"); do
   for mesh in "$@"; do
-    declare -A ms
-    for build in "$a" "$b"; do
-      line=$(LD_LIBRARY_PATH="$build/lib" "$build/bin/ppirayBenchmark" --file "$mesh" \
-        --size "${SIZE:-512x512}" --views "${VIEWS:-8}" --mappers ppiray 2>/dev/null | tail -1)
-      ms[$build]=$(echo "$line" | awk -F'|' '{gsub(/ /, "", $3); print $3}')
+    if [[ "$mesh" == wavelet:* ]]; then
+      source=(--wavelet "${mesh#wavelet:}")
+    else
+      source=(--file "$mesh")
+    fi
+    for mapper in "${mappers[@]}"; do
+      declare -A ms
+      for build in "$a" "$b"; do
+        line=$(LD_LIBRARY_PATH="$build/lib" "$build/bin/ppirayBenchmark" "${source[@]}" \
+          --size "${SIZE:-512x512}" --views "${VIEWS:-8}" --mappers "$mapper" 2>/dev/null | tail -1)
+        ms[$build]=$(echo "$line" | awk -F'|' '{gsub(/ /, "", $3); print $3}')
+      done
+      echo "round $round $(basename "$mesh") $mapper: A ${ms[$a]} ms, B ${ms[$b]} ms, B/A" \
+        "$(awk -v x="${ms[$b]}" -v y="${ms[$a]}" 'BEGIN { printf "%.3f", x / y }')"
+      unset ms
     done
-    echo "round $round $(basename "$mesh"): A ${ms[$a]} ms, B ${ms[$b]} ms, B/A" \
-      "$(awk -v x="${ms[$b]}" -v y="${ms[$a]}" 'BEGIN { printf "%.3f", x / y }')"
-    unset ms
   done
 done

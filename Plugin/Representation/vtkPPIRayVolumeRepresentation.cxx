@@ -4,25 +4,25 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkAppendFilter.h"
 #include "vtkCellType.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
-#include "vtkImageData.h"
-#include "vtkInformationVector.h"
-#include "vtkMath.h"
-#include "vtkStructuredGrid.h"
-#include "vtkUnstructuredGrid.h"
-#include "vtkVolumeRepresentationPreprocessor.h"
-#include "vtkRectilinearGrid.h"
 #include "vtkContourValues.h"
 #include "vtkDataSet.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODVolume.h"
 #include "vtkPVRenderView.h"
-#include "vtkColorTransferFunction.h"
+#include "vtkRectilinearGrid.h"
 #include "vtkScalarsToColors.h"
+#include "vtkStructuredGrid.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 #include "vtkVolumeProperty.h"
+#include "vtkVolumeRepresentationPreprocessor.h"
 
 #include <cstring>
 
@@ -41,7 +41,7 @@ constexpr const char* PPIRayMapperName = "PPIRay";
 bool RenderedUnsplit(vtkDataSet* data, bool mixed)
 {
   if (vtkStructuredGrid::SafeDownCast(data) || vtkImageData::SafeDownCast(data) ||
-    vtkRectilinearGrid::SafeDownCast(data))
+      vtkRectilinearGrid::SafeDownCast(data))
   {
     return data->GetNumberOfCells() > 0 && data->GetCell(0)->GetCellDimension() == 3;
   }
@@ -179,8 +179,8 @@ void vtkPPIRayVolumeRepresentation::SetPPIRayBlendMode(int mode)
 {
   using Mapper = vtkUnstructuredGridGPURayCastMapper;
   this->Mapper->SetBlendMode(mode == Mapper::ISOSURFACES_ONLY
-      ? static_cast<int>(Mapper::ISOSURFACE_BLEND)
-      : static_cast<int>(Mapper::COMPOSITE_BLEND));
+                               ? static_cast<int>(Mapper::ISOSURFACE_BLEND)
+                               : static_cast<int>(Mapper::COMPOSITE_BLEND));
   this->Mapper->SetEmbedIsoSurfaces(mode == Mapper::EMBEDDED_ISOSURFACES);
 }
 
@@ -226,8 +226,8 @@ int vtkPPIRayVolumeRepresentation::RequestData(
   // faces).
   this->PassesCellsUnsplit = false;
   vtkDataObject* input = inputVector[0]->GetNumberOfInformationObjects() == 1
-    ? vtkDataObject::GetData(inputVector[0], 0)
-    : nullptr;
+                           ? vtkDataObject::GetData(inputVector[0], 0)
+                           : nullptr;
   vtkDataSet* data = input ? SingleDataSet(input) : nullptr;
   const bool subdivide =
     this->Mapper->GetHexahedronMode() == vtkUnstructuredGridGPURayCastMapper::HEXAHEDRON_SUBDIVIDE;

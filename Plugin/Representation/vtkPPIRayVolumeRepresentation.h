@@ -71,8 +71,8 @@ public:
   /** The mapper (for its counters, GPU memory size and peel count). */
   vtkUnstructuredGridGPURayCastMapper* GetPPIRayMapper();
 
-  int ProcessViewRequest(vtkInformationRequestKey* request, vtkInformation* inInfo,
-    vtkInformation* outInfo) override;
+  int ProcessViewRequest(
+    vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo) override;
 
   /** Whether the last update passed the cells to the mapper unsplit. */
   bool GetPassesCellsUnsplit() const { return this->PassesCellsUnsplit; }

@@ -2,7 +2,9 @@
 // March pass: per pixel, from the cell a ray enters through (entry pass) to
 // the cell it leaves the mesh from, one tetrahedron at a time.
 //
-// Cell textures (Espinha & Celes 2005, Sec. 3.1), all in the mesh's local frame:
+// Cell textures (Espinha & Celes 2005, Sec. 3.1), all in the mesh's local frame
+// (texels per cell: GEOMETRY_TEXELS = 4, NEIGHBOR_TEXELS = FIELD_TEXELS = 1,
+// declared by vtkPPIRayTetrahedralCellBuffers):
 //   facePlanes[4 t + f] = (n_f, d_f), outward unit normal, n_f . x = d_f on face f;
 //                         a flat cell: its corners (x_v, FLAT_CELL)
 //   neighbors[t][f]     = 4 t' + f' of the cell and face through face f;

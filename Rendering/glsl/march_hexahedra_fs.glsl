@@ -3,7 +3,9 @@
 // 2011): per pixel, from the cell a ray enters through (entry pass) to where
 // it leaves the mesh, one hexahedron at a time.
 //
-// Cell textures (vtkHexahedralCellTextures), in the mesh's local frame:
+// Cell textures (vtkHexahedralCellTextures), in the mesh's local frame (texels
+// per cell: GEOMETRY_TEXELS = 6, NEIGHBOR_TEXELS = FIELD_TEXELS = 2, declared
+// by vtkPPIRayHexahedralCellBuffers):
 //   hexCorners[6 h .. 6 h + 5]   the 8 corners, 24 floats, right-handed
 //   hexNeighbors[2 h]            6 h' + f' (the cell and face entered) through
 //                                faces 0..3, [2 h + 1]: faces 4, 5, the diagonal

@@ -184,11 +184,11 @@ int main(int argc, char* argv[])
 
   vtkSmartPointer<vtkUnstructuredGrid> grid = LoadScene(o);
   const double tets = static_cast<double>(grid->GetNumberOfCells());
-  std::cout << "scene: " << (o.File.empty() ? "wavelet [-" + std::to_string(o.Wavelet) + ", " +
-                                 std::to_string(o.Wavelet) + "]^3 tetrahedralized"
-                                            : o.File)
-            << ", " << grid->GetNumberOfCells() << " cells, " << o.Width << "x" << o.Height
-            << "\n";
+  std::cout << "scene: "
+            << (o.File.empty() ? "wavelet [-" + std::to_string(o.Wavelet) + ", " +
+                                   std::to_string(o.Wavelet) + "]^3 tetrahedralized"
+                               : o.File)
+            << ", " << grid->GetNumberOfCells() << " cells, " << o.Width << "x" << o.Height << "\n";
 
   std::vector<Row> rows;
   std::stringstream list(o.Mappers);
@@ -197,7 +197,7 @@ int main(int argc, char* argv[])
   {
     std::cerr << "measuring " << name << " ..." << std::endl;
     if (name == "ppiray" || name == "ppiray-exact" || name == "ppiray-average" ||
-      name == "ppiray-full")
+        name == "ppiray-full")
     {
       vtkNew<vtkUnstructuredGridGPURayCastMapper> m;
       m->SetIntegrationMode(

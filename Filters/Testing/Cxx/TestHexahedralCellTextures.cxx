@@ -109,7 +109,7 @@ int TestHexahedralCellTextures(int, char*[])
             << ", boundary triangles " << textures->GetBoundaryFaces().size() << ", non-manifold "
             << textures->GetNumberOfNonManifoldFaces() << "\n";
   if (hexes != 27 || textures->GetNumberOfMirroredHexahedra() != 1 ||
-    textures->GetBoundaryFaces().size() != 108 || textures->GetNumberOfNonManifoldFaces() != 0)
+      textures->GetBoundaryFaces().size() != 108 || textures->GetNumberOfNonManifoldFaces() != 0)
   {
     errors += Fail("counts");
   }
@@ -117,7 +117,8 @@ int TestHexahedralCellTextures(int, char*[])
   const std::vector<int>& nb = textures->GetNeighbors();
   const std::vector<vtkIdType>& ids = textures->GetCornerIds();
   // The diagonal of face f of cell h, as a sorted pair of point ids.
-  auto diagonal = [&](vtkIdType h, int f) {
+  auto diagonal = [&](vtkIdType h, int f)
+  {
     const bool second = (nb[8 * h + 6] >> f) & 1;
     const vtkIdType* q = vtkHexahedron::GetFaceArray(f);
     vtkIdType a = ids[8 * h + q[second ? 1 : 0]], b = ids[8 * h + q[second ? 3 : 2]];
@@ -193,7 +194,7 @@ int TestHexahedralCellTextures(int, char*[])
         x[k] = corners[24 * h + 3 * i + k];
       vtkHexahedronCoefficients::ToFrame(frame, x, uvw);
       worst = std::max(worst, std::abs(vtkHexahedronCoefficients::EvaluateField(c, uvw) -
-                                scalars->GetValue(ids[8 * h + i])));
+                                       scalars->GetValue(ids[8 * h + i])));
     }
   }
   std::cout << "coefficients at the corners: worst error " << worst << "\n";
@@ -260,7 +261,7 @@ int TestHexahedralCellTextures(int, char*[])
               << ", unfolded faces " << one->GetNumberOfUnfoldedFaces() << ", triangles outward "
               << facing[0] << ", inward " << facing[1] << "\n";
     if (one->GetNumberOfMirroredHexahedra() != 1 || one->GetNumberOfUnfoldedFaces() < 1 ||
-      facing[0] != 6 || facing[1] != 0)
+        facing[0] != 6 || facing[1] != 0)
     {
       errors += Fail("left-handed pyramid as a hexahedron");
     }

@@ -13,9 +13,9 @@
 //     the same coefficients as the same cells as hexahedra, the tetrahedron is
 //     NOT_A_HEXAHEDRON, progress events arrive, the arrays are cell data.
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkHexahedronCoefficients.h"
@@ -158,7 +158,7 @@ int TestHexahedronCoefficients(int, char*[])
   std::cout << "distorted: flags " << flags << ", corner error " << worst << ", non-planarity "
             << deviation << "\n";
   if (worst > 1e-12 || !(flags & vtkHexahedronCoefficients::NON_PLANAR_FACE) ||
-    (flags & ~vtkHexahedronCoefficients::NON_PLANAR_FACE))
+      (flags & ~vtkHexahedronCoefficients::NON_PLANAR_FACE))
   {
     errors += Fail("distorted hexahedron: corners not interpolated or wrong flags");
   }
@@ -173,7 +173,7 @@ int TestHexahedronCoefficients(int, char*[])
   flags = vtkHexahedronCoefficients::ComputeCell(corners, values, 1e-3, 1e-6, frame, c, &deviation);
   std::cout << "collapsed: flags " << flags << "\n";
   if (!(flags & vtkHexahedronCoefficients::COLLAPSED_EDGE) ||
-    (flags & vtkHexahedronCoefficients::INVERTED))
+      (flags & vtkHexahedronCoefficients::INVERTED))
   {
     errors += Fail("collapsed hexahedron not flagged COLLAPSED_EDGE only");
   }
@@ -232,7 +232,7 @@ int TestHexahedronCoefficients(int, char*[])
   auto* coefficients = vtkDoubleArray::SafeDownCast(cd->GetArray("HexahedronCoefficients"));
   auto* quality = vtkUnsignedCharArray::SafeDownCast(cd->GetArray("HexahedronQuality"));
   if (!coefficients || !quality || !cd->GetArray("HexahedronFrame") ||
-    !cd->GetArray("FaceNonPlanarity"))
+      !cd->GetArray("FaceNonPlanarity"))
   {
     return Fail("filter output lacks its cell arrays");
   }
@@ -249,7 +249,7 @@ int TestHexahedronCoefficients(int, char*[])
             << int(quality->GetValue(0)) << " " << int(quality->GetValue(2)) << " "
             << int(quality->GetValue(4)) << ", progress events " << progressEvents << "\n";
   if (same > 1e-12 || quality->GetValue(0) != 0 || quality->GetValue(2) != 0 ||
-    quality->GetValue(4) != vtkHexahedronCoefficients::NOT_A_HEXAHEDRON || progressEvents < 1)
+      quality->GetValue(4) != vtkHexahedronCoefficients::NOT_A_HEXAHEDRON || progressEvents < 1)
   {
     errors += Fail("filter on hexahedra, voxels and a tetrahedron");
   }

@@ -18,8 +18,8 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
-#include "vtkCommand.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -44,8 +44,8 @@ namespace
 {
 constexpr int Size = 24;
 
-vtkSmartPointer<vtkFloatArray> Render(vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
-  vtkCamera* camera)
+vtkSmartPointer<vtkFloatArray> Render(
+  vtkUnstructuredGrid* grid, vtkVolumeProperty* property, vtkCamera* camera)
 {
   vtkNew<vtkUnstructuredGridReferenceRenderer> reference;
   reference->SetInputData(grid);
@@ -68,8 +68,8 @@ double MaxDifference(vtkFloatArray* a, vtkFloatArray* b)
 
 // Cells of an n^3 grid over [0, 1]^3 moved by `map`, field f(x); `type`
 // VTK_HEXAHEDRON or VTK_VOXEL (point orders differ).
-vtkSmartPointer<vtkUnstructuredGrid> Grid(int n, int type,
-  const std::function<void(double*)>& map, const std::function<double(const double*)>& f)
+vtkSmartPointer<vtkUnstructuredGrid> Grid(int n, int type, const std::function<void(double*)>& map,
+  const std::function<double(const double*)>& f)
 {
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   vtkNew<vtkPoints> points;
@@ -133,7 +133,8 @@ int TestReferenceRendererGeneralCells(int, char*[])
   int errors = 0;
 
   // 1. Linear field, affine (sheared) grid: hexahedra against tetrahedra.
-  auto shear = [](double* x) {
+  auto shear = [](double* x)
+  {
     x[0] += 0.3 * x[1];
     x[2] += 0.2 * x[0];
   };
@@ -171,7 +172,8 @@ int TestReferenceRendererGeneralCells(int, char*[])
   }
 
   // 2. Trilinear field in one hexahedron with non-planar faces.
-  auto twist = [](double* x) {
+  auto twist = [](double* x)
+  {
     x[2] += 0.25 * x[0] * x[1]; // bilinear bulge: faces no longer planar
     x[0] += 0.3 * x[1];
   };
@@ -218,7 +220,7 @@ int TestReferenceRendererGeneralCells(int, char*[])
           x[i] = o[i] + t * d[i] / length;
         }
         if (cell->EvaluatePosition(x, nullptr, subId, pcoords, dist2, weights) == -1 ||
-          cell->GetParametricDistance(pcoords) > 0)
+            cell->GetParametricDistance(pcoords) > 0)
         {
           continue;
         }
@@ -318,9 +320,8 @@ int TestReferenceRendererGeneralCells(int, char*[])
     std::vector<double> progress;
     vtkNew<vtkCallbackCommand> observer;
     observer->SetClientData(&progress);
-    observer->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
-      static_cast<std::vector<double>*>(client)->push_back(*static_cast<double*>(data));
-    });
+    observer->SetCallback([](vtkObject*, unsigned long, void* client, void* data)
+      { static_cast<std::vector<double>*>(client)->push_back(*static_cast<double*>(data)); });
     reference->AddObserver(vtkCommand::ProgressEvent, observer);
     reference->Update();
     const bool ordered = std::is_sorted(progress.begin(), progress.end());

@@ -51,7 +51,7 @@ int TestTetrahedralCellTextures(int, char*[])
   vtkNew<vtkTetrahedralCellTextures> cells;
   int errors = 0;
   if (!cells->BuildGeometry(grid) ||
-    !cells->BuildField(grid->GetPointData()->GetScalars(), false, 0))
+      !cells->BuildField(grid->GetPointData()->GetScalars(), false, 0))
   {
     std::cerr << "build failed\n";
     return 1;
@@ -100,8 +100,7 @@ int TestTetrahedralCellTextures(int, char*[])
         const double d = p[0] * local[v][0] + p[1] * local[v][1] + p[2] * local[v][2] - p[3];
         if ((v != f && std::abs(d) > 1e-5) || (v == f && !(d < -1e-3)))
         {
-          std::cerr << "tet " << t << " face " << f << " vertex " << v << " distance " << d
-                    << "\n";
+          std::cerr << "tet " << t << " face " << f << " vertex " << v << " distance " << d << "\n";
           ++errors;
         }
       }

@@ -2,9 +2,9 @@
 // (divergence theorem gives the box volume), owning cell and local face
 // consistent with the cell's points, also with half the tetrahedra inverted.
 
+#include "ppirayConformingTetrahedra.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "ppirayConformingTetrahedra.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
@@ -53,8 +53,8 @@ int Check(vtkUnstructuredGrid* grid, const char* label)
   // 3x3x3 voxels: 6 sides x 9 squares x 2 triangles.
   if (surface->GetNumberOfPolys() != 108)
   {
-    std::cerr << label << ": expected 108 boundary triangles, got "
-              << surface->GetNumberOfPolys() << "\n";
+    std::cerr << label << ": expected 108 boundary triangles, got " << surface->GetNumberOfPolys()
+              << "\n";
     ++errors;
   }
   const double volume = EnclosedVolume(surface);
@@ -141,7 +141,7 @@ int TestUnstructuredGridBoundaryFaces(int, char*[])
     {
       const vtkIdType n = neighbors[4 * t + f];
       if (n >= 0 && neighbors[4 * n] != vtkIdType(t) && neighbors[4 * n + 1] != vtkIdType(t) &&
-        neighbors[4 * n + 2] != vtkIdType(t) && neighbors[4 * n + 3] != vtkIdType(t))
+          neighbors[4 * n + 2] != vtkIdType(t) && neighbors[4 * n + 3] != vtkIdType(t))
       {
         std::cerr << "adjacency not symmetric at tetrahedron " << t << "\n";
         ++errors;

@@ -8,8 +8,8 @@
 
 #include "ppirayVolumeIntegrals.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <initializer_list>
 #include <limits>
@@ -17,7 +17,7 @@
 namespace
 {
 // Composite 2-point Gauss-Legendre with n sub-intervals on [0, 1] (2n samples).
-template <typename F>
+template<typename F>
 double Quadrature(F f, int n)
 {
   const double h = 1.0 / n, g = 0.5 / std::sqrt(3.0);
@@ -35,8 +35,8 @@ int TestVolumeIntegrals(int, char*[])
 {
   int errors = 0;
   double worst = 0;
-  auto check = [&](double got, double want, double tolerance, const char* what, double x,
-                 double y) {
+  auto check = [&](double got, double want, double tolerance, const char* what, double x, double y)
+  {
     worst = std::max(worst, std::abs(got - want));
     if (!(std::abs(got - want) <= tolerance))
     {
@@ -76,7 +76,8 @@ int TestVolumeIntegrals(int, char*[])
       for (int i = 0; i < 3; ++i)
       {
         const double brute = Quadrature(
-          [&](double x) {
+          [&](double x)
+          {
             const double color = cf[i] + (cb[i] - cf[i]) * x;
             const double tau = a + (b - a) * x;
             return color * tau * std::exp(-(a * x + c * x * x));

@@ -49,7 +49,8 @@ inline int BaselineTest(
   const int w = size[0], h = size[1];
   const std::vector<unsigned char> image = ReadRGB(window);
   const std::string name = vtksys::SystemTools::GetFilenameWithoutLastExtension(baseline);
-  auto keep = [&](const std::vector<unsigned char>* reference) {
+  auto keep = [&](const std::vector<unsigned char>* reference)
+  {
     if (temporary.empty())
     {
       return;
@@ -76,8 +77,8 @@ inline int BaselineTest(
   const int channels = png->GetNumberOfScalarComponents();
   if (dims[0] != w || dims[1] != h || channels < 3)
   {
-    std::printf("FAILED: baseline %s is %dx%d (%d channels), the image %dx%d\n",
-      baseline.c_str(), dims[0], dims[1], channels, w, h);
+    std::printf("FAILED: baseline %s is %dx%d (%d channels), the image %dx%d\n", baseline.c_str(),
+      dims[0], dims[1], channels, w, h);
     keep(nullptr);
     return 1;
   }

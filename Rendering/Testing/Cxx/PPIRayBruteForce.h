@@ -49,8 +49,8 @@ struct BruteForceImage
 inline BruteForceImage BruteForceMarch(vtkRenderer* ren, vtkUnstructuredGrid* grid,
   vtkVolumeProperty* property, const char* array, bool cellScalars, int w, int h, double step)
 {
-  vtkDataArray* scalars = cellScalars ? grid->GetCellData()->GetArray(array)
-                                      : grid->GetPointData()->GetArray(array);
+  vtkDataArray* scalars =
+    cellScalars ? grid->GetCellData()->GetArray(array) : grid->GetPointData()->GetArray(array);
   vtkNew<vtkStaticCellLocator> locator;
   locator->SetDataSet(grid);
   locator->BuildLocator();
@@ -82,86 +82,88 @@ inline BruteForceImage BruteForceMarch(vtkRenderer* ren, vtkUnstructuredGrid* gr
   BruteForceImage image;
   image.RGB.assign(3 * rays.size(), 0.0);
   std::vector<long long> samples(rays.size(), 0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(rays.size()), [&](vtkIdType begin, vtkIdType end) {
-    vtkNew<vtkGenericCell> cell;
-    std::vector<double> weights(64);
-    for (vtkIdType r = begin; r < end; ++r)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(rays.size()),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const auto& ray = rays[r];
-      double d[3] = { ray[3] - ray[0], ray[4] - ray[1], ray[5] - ray[2] };
-      // The part of the ray inside the bounds (slab clipping).
-      double t0 = 0.0, t1 = 1.0;
-      for (int i = 0; i < 3; ++i)
+      vtkNew<vtkGenericCell> cell;
+      std::vector<double> weights(64);
+      for (vtkIdType r = begin; r < end; ++r)
       {
-        if (d[i] == 0.0)
-        {
-          if (ray[i] < bounds[2 * i] || ray[i] > bounds[2 * i + 1])
-          {
-            t1 = -1.0;
-          }
-          continue;
-        }
-        double a = (bounds[2 * i] - ray[i]) / d[i], b = (bounds[2 * i + 1] - ray[i]) / d[i];
-        t0 = std::max(t0, std::min(a, b));
-        t1 = std::min(t1, std::max(a, b));
-      }
-      if (!(t1 > t0))
-      {
-        continue;
-      }
-      const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      const double dt = step / length;
-      double rgb[3] = { 0, 0, 0 }, transmittance = 1.0;
-      vtkIdType current = -1;
-      for (double t = t0 + 0.5 * dt; t < t1; t += dt)
-      {
-        double x[3] = { ray[0] + t * d[0], ray[1] + t * d[1], ray[2] + t * d[2] };
-        double pcoords[3], dist2;
-        int subId;
-        bool inside = false;
-        if (current >= 0)
-        {
-          grid->GetCell(current, cell);
-          double closest[3];
-          inside = cell->EvaluatePosition(x, closest, subId, pcoords, dist2, weights.data()) == 1;
-        }
-        if (!inside)
-        {
-          current = locator->FindCell(x, 0.0, cell, subId, pcoords, weights.data());
-          inside = current >= 0;
-        }
-        ++samples[r];
-        if (!inside)
-        {
-          continue;
-        }
-        double s = 0.0;
-        if (cellScalars)
-        {
-          s = scalars->GetComponent(current, 0);
-        }
-        else
-        {
-          for (vtkIdType v = 0; v < cell->GetNumberOfPoints(); ++v)
-          {
-            s += weights[v] * scalars->GetComponent(cell->GetPointId(v), 0);
-          }
-        }
-        double c[3];
-        color->GetTable(s, s, 1, c);
-        const double alpha = 1.0 - std::exp(-opacity->GetValue(s) / unitDistance * step);
+        const auto& ray = rays[r];
+        double d[3] = { ray[3] - ray[0], ray[4] - ray[1], ray[5] - ray[2] };
+        // The part of the ray inside the bounds (slab clipping).
+        double t0 = 0.0, t1 = 1.0;
         for (int i = 0; i < 3; ++i)
         {
-          rgb[i] += transmittance * alpha * c[i];
+          if (d[i] == 0.0)
+          {
+            if (ray[i] < bounds[2 * i] || ray[i] > bounds[2 * i + 1])
+            {
+              t1 = -1.0;
+            }
+            continue;
+          }
+          double a = (bounds[2 * i] - ray[i]) / d[i], b = (bounds[2 * i + 1] - ray[i]) / d[i];
+          t0 = std::max(t0, std::min(a, b));
+          t1 = std::min(t1, std::max(a, b));
         }
-        transmittance *= 1.0 - alpha;
+        if (!(t1 > t0))
+        {
+          continue;
+        }
+        const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        const double dt = step / length;
+        double rgb[3] = { 0, 0, 0 }, transmittance = 1.0;
+        vtkIdType current = -1;
+        for (double t = t0 + 0.5 * dt; t < t1; t += dt)
+        {
+          double x[3] = { ray[0] + t * d[0], ray[1] + t * d[1], ray[2] + t * d[2] };
+          double pcoords[3], dist2;
+          int subId;
+          bool inside = false;
+          if (current >= 0)
+          {
+            grid->GetCell(current, cell);
+            double closest[3];
+            inside = cell->EvaluatePosition(x, closest, subId, pcoords, dist2, weights.data()) == 1;
+          }
+          if (!inside)
+          {
+            current = locator->FindCell(x, 0.0, cell, subId, pcoords, weights.data());
+            inside = current >= 0;
+          }
+          ++samples[r];
+          if (!inside)
+          {
+            continue;
+          }
+          double s = 0.0;
+          if (cellScalars)
+          {
+            s = scalars->GetComponent(current, 0);
+          }
+          else
+          {
+            for (vtkIdType v = 0; v < cell->GetNumberOfPoints(); ++v)
+            {
+              s += weights[v] * scalars->GetComponent(cell->GetPointId(v), 0);
+            }
+          }
+          double c[3];
+          color->GetTable(s, s, 1, c);
+          const double alpha = 1.0 - std::exp(-opacity->GetValue(s) / unitDistance * step);
+          for (int i = 0; i < 3; ++i)
+          {
+            rgb[i] += transmittance * alpha * c[i];
+          }
+          transmittance *= 1.0 - alpha;
+        }
+        for (int i = 0; i < 3; ++i)
+        {
+          image.RGB[3 * r + i] = rgb[i];
+        }
       }
-      for (int i = 0; i < 3; ++i)
-      {
-        image.RGB[3 * r + i] = rgb[i];
-      }
-    }
-  });
+    });
   for (long long n : samples)
   {
     image.Samples += n;

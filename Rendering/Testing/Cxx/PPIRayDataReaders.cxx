@@ -61,8 +61,8 @@ public:
   std::string Text(size_t at, size_t n) const
   {
     return at < this->Bytes.size()
-      ? std::string(&this->Bytes[at], std::min(n, this->Bytes.size() - at))
-      : std::string();
+             ? std::string(&this->Bytes[at], std::min(n, this->Bytes.size() - at))
+             : std::string();
   }
 
 private:
@@ -117,7 +117,7 @@ public:
       this->Dimensions[name] = lengths.back();
       at += 4;
     }
-    this->Attributes(at, nullptr); // global attributes
+    this->Attributes(at, nullptr);  // global attributes
     if (this->File.Int(at) != 0x0B) // NC_VARIABLE
     {
       return false;
@@ -181,7 +181,7 @@ public:
     const size_t begin = v.Begin + (v.Record ? record * this->RecordSize : 0) + first * size;
     std::vector<double> values;
     if (size == 0 || v.Type == 2 || first + count > v.Count() ||
-      begin + count * size > this->File.Size())
+        begin + count * size > this->File.Size())
     {
       return values;
     }
@@ -285,10 +285,10 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadPLOT3D(
     return nullptr;
   }
   const int dims[3] = { xyz.Int(0), xyz.Int(4), xyz.Int(8) };
-  const size_t n = static_cast<size_t>(std::max(dims[0], 0)) * std::max(dims[1], 0) *
-    std::max(dims[2], 0);
+  const size_t n =
+    static_cast<size_t>(std::max(dims[0], 0)) * std::max(dims[1], 0) * std::max(dims[2], 0);
   if (dims[0] < 2 || dims[1] < 2 || dims[2] < 2 || xyz.Size() < 12 + 12 * n ||
-    q.Int(0) != dims[0] || q.Int(4) != dims[1] || q.Int(8) != dims[2] || q.Size() < 28 + 20 * n)
+      q.Int(0) != dims[0] || q.Int(4) != dims[1] || q.Int(8) != dims[2] || q.Size() < 28 + 20 * n)
   {
     *error = "not a whole single-grid 3D PLOT3D pair: " + xyzPath;
     return nullptr;
@@ -298,8 +298,8 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadPLOT3D(
   points->SetNumberOfPoints(static_cast<vtkIdType>(n));
   for (size_t p = 0; p < n; ++p)
   {
-    points->SetPoint(static_cast<vtkIdType>(p), xyz.Float(12 + 4 * p),
-      xyz.Float(12 + 4 * (n + p)), xyz.Float(12 + 4 * (2 * n + p)));
+    points->SetPoint(static_cast<vtkIdType>(p), xyz.Float(12 + 4 * p), xyz.Float(12 + 4 * (n + p)),
+      xyz.Float(12 + 4 * (2 * n + p)));
   }
   vtkNew<vtkFloatArray> scalars;
   scalars->SetName(
@@ -326,9 +326,8 @@ vtkSmartPointer<vtkUnstructuredGrid> ReadPLOT3D(
     scalars->SetValue(static_cast<vtkIdType>(p), static_cast<float>(value));
   }
   vtkNew<vtkCellArray> cells;
-  auto id = [&](int i, int j, int k) {
-    return static_cast<vtkIdType>(i + static_cast<vtkIdType>(dims[0]) * (j + dims[1] * k));
-  };
+  auto id = [&](int i, int j, int k)
+  { return static_cast<vtkIdType>(i + static_cast<vtkIdType>(dims[0]) * (j + dims[1] * k)); };
   for (int k = 0; k + 1 < dims[2]; ++k)
   {
     for (int j = 0; j + 1 < dims[1]; ++j)

@@ -20,11 +20,26 @@
 #include <algorithm>
 #include <cmath>
 
-#define PPIRAY_GLSL_SCALAR_BUILTINS(T)                                                           \
-  inline T abs(T x) { return std::abs(x); }                                                    \
-  inline T sqrt(T x) { return std::sqrt(x); }                                                  \
-  inline T min(T a, T b) { return std::min(a, b); }                                            \
-  inline T max(T a, T b) { return std::max(a, b); }                                            \
-  inline T clamp(T x, T lo, T hi) { return std::min(std::max(x, lo), hi); }
+#define PPIRAY_GLSL_SCALAR_BUILTINS(T)                                                             \
+  inline T abs(T x)                                                                                \
+  {                                                                                                \
+    return std::abs(x);                                                                            \
+  }                                                                                                \
+  inline T sqrt(T x)                                                                               \
+  {                                                                                                \
+    return std::sqrt(x);                                                                           \
+  }                                                                                                \
+  inline T min(T a, T b)                                                                           \
+  {                                                                                                \
+    return std::min(a, b);                                                                         \
+  }                                                                                                \
+  inline T max(T a, T b)                                                                           \
+  {                                                                                                \
+    return std::max(a, b);                                                                         \
+  }                                                                                                \
+  inline T clamp(T x, T lo, T hi)                                                                  \
+  {                                                                                                \
+    return std::min(std::max(x, lo), hi);                                                          \
+  }
 
 #endif

@@ -10,8 +10,8 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
-#include <string>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace ppiray_test
@@ -39,8 +39,7 @@ inline void WritePNG(const std::string& path, const std::vector<unsigned char>& 
   vtkNew<vtkImageData> image;
   image->SetDimensions(w, h, 1);
   image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  std::copy(rgb.begin(), rgb.end(),
-    static_cast<unsigned char*>(image->GetScalarPointer()));
+  std::copy(rgb.begin(), rgb.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputData(image);
   writer->SetFileName(path.c_str());

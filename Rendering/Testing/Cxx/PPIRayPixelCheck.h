@@ -28,7 +28,7 @@ struct PixelCheck
 {
   double MaxDifference = 0; // 1/255 units
   double P99 = 0;
-  int Pixels = 0;  // pixels compared: covered by either image
+  int Pixels = 0; // pixels compared: covered by either image
   int NaNPixels = 0;
 };
 

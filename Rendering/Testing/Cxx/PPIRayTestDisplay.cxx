@@ -19,7 +19,8 @@ namespace ppiray_test
 void* SharedDisplay()
 {
 #if PPIRAY_TEST_HAS_X11
-  static Display* display = []() -> Display* {
+  static Display* display = []() -> Display*
+  {
     for (int attempt = 0; attempt < 50; ++attempt)
     {
       if (Display* d = XOpenDisplay(nullptr))

@@ -47,7 +47,8 @@ inline vtkSmartPointer<vtkUnstructuredGrid> VoxelTetrahedra(
   vtkNew<vtkDoubleArray> scalars;
   scalars->SetName("s");
   std::map<std::array<int, 3>, vtkIdType> ids;
-  auto point = [&](int i, int j, int k) {
+  auto point = [&](int i, int j, int k)
+  {
     auto it = ids.find({ i, j, k });
     if (it != ids.end())
     {
@@ -130,9 +131,9 @@ inline void WorldLinearField(vtkUnstructuredGrid* grid)
 // A smooth field on [0, 1]^3-ish coordinates.
 inline double Blob(double x, double y, double z)
 {
-  return std::exp(-((x - 0.5) * (x - 0.5) + (y - 0.45) * (y - 0.45) + (z - 0.55) * (z - 0.55)) /
-           0.12) +
-    0.3 * x;
+  return std::exp(
+           -((x - 0.5) * (x - 0.5) + (y - 0.45) * (y - 0.45) + (z - 0.55) * (z - 0.55)) / 0.12) +
+         0.3 * x;
 }
 
 // The blob on an n x n x n block of voxels over [0, 1]^3 (vtkImageData through

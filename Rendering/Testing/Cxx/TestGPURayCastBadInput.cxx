@@ -106,9 +106,9 @@ int TestGPURayCastBadInput(int, char*[])
   const Outcome nn = RenderGrid(nan);
   std::cout << "NaN scalars: " << nn.Warnings << "\n";
   const auto d = ppiray_test::Compare(reference.Image, nn.Image);
-  errors += Expect(nn.Warnings.find("NaN") != std::string::npos && d.Max > 0 &&
-      Lit(nn.Image) > 1000,
-    "NaN scalars: warning, the touching cells change, the rest renders");
+  errors +=
+    Expect(nn.Warnings.find("NaN") != std::string::npos && d.Max > 0 && Lit(nn.Image) > 1000,
+      "NaN scalars: warning, the touching cells change, the rest renders");
 
   // Unsupported 3D cells only (a pentagonal prism: 10 corners).
   vtkNew<vtkUnstructuredGrid> prisms;
@@ -136,7 +136,7 @@ int TestGPURayCastBadInput(int, char*[])
   mixed->InsertNextCell(VTK_TRIANGLE, 3, triangle);
   const Outcome m = RenderGrid(mixed);
   errors += Expect(m.Errors.find("1 vtkTriangle") != std::string::npos &&
-      ppiray_test::Compare(reference.Image, m.Image).Max == 0,
+                     ppiray_test::Compare(reference.Image, m.Image).Max == 0,
     "tetrahedra and a triangle: error, tetrahedra render unchanged");
 
   // The same tetrahedra as quadratic tetrahedra (mid-edge points unused):
@@ -156,7 +156,7 @@ int TestGPURayCastBadInput(int, char*[])
   const Outcome q = RenderGrid(quadratic);
   std::cout << "quadratic: " << q.Warnings << "\n";
   errors += Expect(q.Warnings.find("quadratic") != std::string::npos && q.Errors.empty() &&
-      ppiray_test::Compare(reference.Image, q.Image).Max == 0,
+                     ppiray_test::Compare(reference.Image, q.Image).Max == 0,
     "quadratic tetrahedra: warning, rendered through their corners");
 
   // A zero-volume tetrahedron added: warning, image unchanged.
@@ -174,7 +174,7 @@ int TestGPURayCastBadInput(int, char*[])
   const Outcome f = RenderGrid(flat);
   std::cout << "flat: " << f.Warnings << "\n";
   errors += Expect(f.Warnings.find("zero-volume") != std::string::npos &&
-      ppiray_test::Compare(reference.Image, f.Image).Max <= 1,
+                     ppiray_test::Compare(reference.Image, f.Image).Max <= 1,
     "zero-volume tetrahedron: warning, image unchanged");
 
   // Infinite scalars and coordinates: error, nothing drawn.
@@ -190,8 +190,8 @@ int TestGPURayCastBadInput(int, char*[])
   far->GetPoints()->SetPoint(5, 0.0, -std::numeric_limits<double>::infinity(), 0.0);
   const Outcome ic = RenderGrid(far);
   std::cout << "infinite coordinate: " << ic.Errors << "\n";
-  errors += Expect(ic.Errors.find("infinite or NaN point coordinates") != std::string::npos &&
-      Lit(ic.Image) == 0,
+  errors += Expect(
+    ic.Errors.find("infinite or NaN point coordinates") != std::string::npos && Lit(ic.Image) == 0,
     "infinite coordinate: error, nothing drawn");
 
   // A 3-component array (s, 0, 0): magnitude |s| = s renders as the scalar;
@@ -209,15 +209,17 @@ int TestGPURayCastBadInput(int, char*[])
   vectors->GetPointData()->SetScalars(v);
   const Outcome vm = RenderGrid(vectors);
   errors += Expect(vm.Errors.empty() && vm.Warnings.empty() &&
-      ppiray_test::Compare(reference.Image, vm.Image).Max == 0,
+                     ppiray_test::Compare(reference.Image, vm.Image).Max == 0,
     "3-component array by magnitude renders as its scalar");
-  const Outcome vc = RenderGrid(vectors, [](vtkUnstructuredGridGPURayCastMapper* mapper) {
-    mapper->SetVectorModeToComponent();
-    mapper->SetVectorComponent(7);
-  });
+  const Outcome vc = RenderGrid(vectors,
+    [](vtkUnstructuredGridGPURayCastMapper* mapper)
+    {
+      mapper->SetVectorModeToComponent();
+      mapper->SetVectorComponent(7);
+    });
   std::cout << "component 7 of 3: " << vc.Warnings << "\n";
   errors += Expect(vc.Warnings.find("using 2") != std::string::npos &&
-      ppiray_test::Compare(reference.Image, vc.Image).Max > 10,
+                     ppiray_test::Compare(reference.Image, vc.Image).Max > 10,
     "component out of range: warning, the last component rendered");
   return errors == 0 ? 0 : 1;
 }

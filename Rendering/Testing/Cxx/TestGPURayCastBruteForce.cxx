@@ -49,7 +49,7 @@ struct Statistics
 bool Covered(const double* rgb)
 {
   return std::round(255 * rgb[0]) >= 1 || std::round(255 * rgb[1]) >= 1 ||
-    std::round(255 * rgb[2]) >= 1;
+         std::round(255 * rgb[2]) >= 1;
 }
 
 // Per-channel |a - b| * 255 over the pixels either covers.
@@ -170,14 +170,14 @@ vtkSmartPointer<vtkUnstructuredGrid> MismatchedVoxels(int n)
         }
         if (j + 1 < n && m != mirrored(i, j + 1, k))
         {
-          const vtkIdType flat[4] = { id(i, j + 1, k), id(i + 1, j + 1, k),
-            id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1) };
+          const vtkIdType flat[4] = { id(i, j + 1, k), id(i + 1, j + 1, k), id(i + 1, j + 1, k + 1),
+            id(i, j + 1, k + 1) };
           cells->InsertNextCell(4, flat);
         }
         if (k + 1 < n && m != mirrored(i, j, k + 1))
         {
-          const vtkIdType flat[4] = { id(i, j, k + 1), id(i + 1, j, k + 1),
-            id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1) };
+          const vtkIdType flat[4] = { id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+            id(i, j + 1, k + 1) };
           cells->InsertNextCell(4, flat);
         }
       }
@@ -259,11 +259,12 @@ int Run(const SceneCase& scene)
   const int coveredGPU = CoveredPixels(gpu), coveredMarch = CoveredPixels(march.RGB);
   std::printf("%-24s covered %4d (march %4d, %.1f M samples) | GPU-march p99 %.2f max %.2f | "
               "reference-march p99 %.2f max %.2f | GPU-reference p99 %.2f max %.2f\n",
-    scene.Name.c_str(), coveredGPU, coveredMarch, 1e-6 * march.Samples, gpuMarch.P99,
-    gpuMarch.Max, refMarch.P99, refMarch.Max, gpuRef.P99, gpuRef.Max);
+    scene.Name.c_str(), coveredGPU, coveredMarch, 1e-6 * march.Samples, gpuMarch.P99, gpuMarch.Max,
+    refMarch.P99, refMarch.Max, gpuRef.P99, gpuRef.Max);
   std::fflush(stdout);
   int errors = 0;
-  auto fail = [&](bool bad, const char* what) {
+  auto fail = [&](bool bad, const char* what)
+  {
     if (bad)
     {
       std::printf("FAILED: %s: %s\n", scene.Name.c_str(), what);
@@ -295,7 +296,8 @@ int TestGPURayCastBruteForce(int, char*[])
     [](vtkVolumeProperty* p) { ppiray_test::SpikeTransferFunction(p); } });
   // Two parts (a gap at i = 2) and a hole through the larger one.
   scenes.push_back({ "non-convex, two parts",
-    Block(8, [](int i, int j, int k) { return i != 2 && !(i >= 4 && i <= 5 && j >= 3 && j <= 4); },
+    Block(
+      8, [](int i, int j, int k) { return i != 2 && !(i >= 4 && i <= 5 && j >= 3 && j <= 4); },
       toPercent),
     "s", false,
     [](vtkVolumeProperty* p) { ppiray_test::SmoothTransferFunction(p, 0, 100, 0.8, 0.2); } });
@@ -322,20 +324,22 @@ int TestGPURayCastBruteForce(int, char*[])
   }
   scenes.push_back({ "Cool to Warm (Diverging)", Block(6, All), "s", false,
     [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); } });
-  scenes.push_back({ "Lab, three nodes", Block(6, All), "s", false, [](vtkVolumeProperty* p) {
-                      vtkNew<vtkColorTransferFunction> color;
-                      color->SetColorSpaceToLab();
-                      color->AddRGBPoint(0.0, 0.05, 0.1, 0.9);
-                      color->AddRGBPoint(0.7, 0.95, 0.95, 0.2);
-                      color->AddRGBPoint(1.3, 0.9, 0.05, 0.05);
-                      vtkNew<vtkPiecewiseFunction> opacity;
-                      opacity->AddPoint(0.2, 0.0);
-                      opacity->AddPoint(0.8, 0.3);
-                      opacity->AddPoint(1.3, 0.9);
-                      p->SetColor(color);
-                      p->SetScalarOpacity(opacity);
-                      p->SetScalarOpacityUnitDistance(0.2);
-                    } });
+  scenes.push_back({ "Lab, three nodes", Block(6, All), "s", false,
+    [](vtkVolumeProperty* p)
+    {
+      vtkNew<vtkColorTransferFunction> color;
+      color->SetColorSpaceToLab();
+      color->AddRGBPoint(0.0, 0.05, 0.1, 0.9);
+      color->AddRGBPoint(0.7, 0.95, 0.95, 0.2);
+      color->AddRGBPoint(1.3, 0.9, 0.05, 0.05);
+      vtkNew<vtkPiecewiseFunction> opacity;
+      opacity->AddPoint(0.2, 0.0);
+      opacity->AddPoint(0.8, 0.3);
+      opacity->AddPoint(1.3, 0.9);
+      p->SetColor(color);
+      p->SetScalarOpacity(opacity);
+      p->SetScalarOpacityUnitDistance(0.2);
+    } });
   {
     // Every other tetrahedron with two corners swapped (negative orientation).
     auto grid = Block(6, All);

@@ -23,15 +23,16 @@ int TestGPURayCastCaches(int, char*[])
   scene.Show(mapper, grid, { 2.2, 1.4, 2.6 }, { 0.5, 0.5, 0.5 });
 
   int errors = 0;
-  auto expect = [&](int geometry, int field, int tf, const char* step) {
+  auto expect = [&](int geometry, int field, int tf, const char* step)
+  {
     std::cout << step << ": uploads geometry " << mapper->GetGeometryUploadCount() << ", field "
               << mapper->GetFieldUploadCount() << ", transfer function "
               << mapper->GetTransferFunctionUploadCount() << "\n";
     if (mapper->GetGeometryUploadCount() != geometry || mapper->GetFieldUploadCount() != field ||
-      mapper->GetTransferFunctionUploadCount() != tf)
+        mapper->GetTransferFunctionUploadCount() != tf)
     {
-      std::cerr << "FAILED after " << step << ": expected " << geometry << " " << field << " "
-                << tf << "\n";
+      std::cerr << "FAILED after " << step << ": expected " << geometry << " " << field << " " << tf
+                << "\n";
       ++errors;
     }
   };
@@ -73,7 +74,7 @@ int TestGPURayCastCaches(int, char*[])
   expect(2, 3, 2, "point edit");
 
   if (ppiray_test::Compare(first, afterTF).Max == 0 ||
-    ppiray_test::Compare(afterTF, afterField).Max == 0)
+      ppiray_test::Compare(afterTF, afterField).Max == 0)
   {
     std::cerr << "FAILED: an edit did not change the image\n";
     ++errors;

@@ -2,10 +2,10 @@
 // SetScalarModeToUseCellFieldData while the point scalars stay active:
 // baseline image and 144 pixels against the exact CPU integral.
 
+#include "PPIRayBaseline.h"
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
 #include "vtkCellData.h"
-#include "PPIRayBaseline.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include <iostream>

@@ -1,8 +1,8 @@
 // A convex tetrahedral mesh (6 x 6 x 6 voxels, 1,296 tetrahedra) with a smooth
 // field and transfer function, perspective camera: baseline image; one peel.
 
-#include "PPIRayTestScenes.h"
 #include "PPIRayBaseline.h"
+#include "PPIRayTestScenes.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include <iostream>

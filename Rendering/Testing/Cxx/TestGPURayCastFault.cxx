@@ -18,6 +18,7 @@
 // are further off: the bounds leave that room, a lost segment (tens of
 // 1/255) does not fit in them. A baseline image of the native rendering.
 
+#include "PPIRayBaseline.h"
 #include "PPIRayImageCompare.h"
 #include "PPIRayReferenceImage.h"
 #include "PPIRayTestScenes.h"
@@ -25,7 +26,6 @@
 #include "vtkDoubleArray.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "PPIRayBaseline.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include <cmath>
@@ -33,9 +33,9 @@
 
 namespace
 {
-constexpr int Cells = 4;       // per block and axis (2 across x per block)
-constexpr double Throw = 0.1;  // the right block's downward shift
-constexpr double Twist = 0.6;  // the fault surface's yz coefficient
+constexpr int Cells = 4;      // per block and axis (2 across x per block)
+constexpr double Throw = 0.1; // the right block's downward shift
+constexpr double Twist = 0.6; // the fault surface's yz coefficient
 
 double FaultX(double y, double z)
 {

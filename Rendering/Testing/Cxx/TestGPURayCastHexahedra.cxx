@@ -23,22 +23,22 @@
 //     like the same cells given as hexahedra; a mixed mesh falls back to
 //     tetrahedra with a warning.
 
+#include "PPIRayBaseline.h"
 #include "PPIRayImageCompare.h"
 #include "PPIRayPixelCheck.h"
 #include "PPIRayReferenceImage.h"
 #include "PPIRayTestScenes.h"
+#include "ppirayConformingTetrahedra.h"
 #include "vtkAppendFilter.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkColorTransferFunction.h"
-#include "ppirayConformingTetrahedra.h"
 #include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkPiecewiseFunction.h"
-#include "PPIRayBaseline.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 #include "vtkUnstructuredGridReferenceRenderer.h"
@@ -317,9 +317,9 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     grid->GetPoints()->SetPoint(PointId(grid, 0, 0, 0), x);
     grid->GetPoints()->Modified();
     const auto d0 = NativeAgainstSplit(scene, mapper);
-    std::cout << "collapsed at corner 0: hexahedra " << mapper->GetNumberOfHexahedra()
-              << ", peels " << mapper->GetNumberOfPeels() << ", against the split: p99 " << d0.P99
-              << " max " << d0.Max << "\n";
+    std::cout << "collapsed at corner 0: hexahedra " << mapper->GetNumberOfHexahedra() << ", peels "
+              << mapper->GetNumberOfPeels() << ", against the split: p99 " << d0.P99 << " max "
+              << d0.Max << "\n";
     if (mapper->GetNumberOfHexahedra() != 27 || mapper->GetNumberOfPeels() != 1 || d0.P99 > 16.0)
     {
       errors += Fail("a hexahedron collapsed at corner 0");
@@ -354,7 +354,7 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
               << mapper->GetNumberOfPeels() << ", against the split: p99 " << flat.P99 << " max "
               << flat.Max << "\n";
     if (messages->Warnings.find("9 zero-volume hexahedra skipped") == std::string::npos ||
-      mapper->GetNumberOfHexahedra() != 18 || mapper->GetNumberOfPeels() != 1 || flat.P99 > 16.0)
+        mapper->GetNumberOfHexahedra() != 18 || mapper->GetNumberOfPeels() != 1 || flat.P99 > 16.0)
     {
       errors += Fail("a flattened layer: expected 9 cells skipped with a warning, 18 native");
     }
@@ -399,8 +399,7 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     std::cout << what << ": hexahedra " << mapper->GetNumberOfHexahedra() << ", peels "
               << mapper->GetNumberOfPeels() << ", against the split: p99 " << d.P99 << " max "
               << d.Max << "\n";
-    if (mapper->GetNumberOfHexahedra() != cells || mapper->GetNumberOfPeels() != 1 ||
-      d.Max > 2.0)
+    if (mapper->GetNumberOfHexahedra() != cells || mapper->GetNumberOfPeels() != 1 || d.Max > 2.0)
     {
       errors += Fail(what + ": its volume differs from the split");
     }
@@ -470,8 +469,8 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
     scene.Show(mapper, grid, { 2.2, 1.4, 2.6 }, { 0.5, 0.5, 0.5 });
     scene.Window->Render();
-    const auto check = ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property,
-      ppiray_test::ReadRGB(scene.Window), 120, 120);
+    const auto check = ppiray_test::CheckPixels(
+      scene.Renderer, grid, scene.Property, ppiray_test::ReadRGB(scene.Window), 120, 120);
     std::cout << "folded layer: hexahedra " << mapper->GetNumberOfHexahedra() << ", peels "
               << mapper->GetNumberOfPeels() << ", against the reference: ";
     errors += ppiray_test::ExpectCoverage(check, 5000);
@@ -515,7 +514,7 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     std::cout << "mixed: hexahedra " << mapper->GetNumberOfHexahedra() << ", tetrahedra "
               << mapper->GetNumberOfTetrahedra() << "\n";
     if (mapper->GetNumberOfHexahedra() != 0 || mapper->GetNumberOfTetrahedra() != 6 * 64 + 1 ||
-      messages->Warnings.find("hexahedra only") == std::string::npos)
+        messages->Warnings.find("hexahedra only") == std::string::npos)
     {
       errors += Fail("a mixed mesh did not fall back to tetrahedra with a warning");
     }

@@ -31,11 +31,10 @@ int TestGPURayCastIntegrationModes(int, char*[])
   int errors = 0;
   for (bool spikes : { false, true })
   {
-    auto grid = ppiray_test::VoxelTetrahedra(n, 1.0 / 8, origin,
-      [](int, int, int) { return true; },
-      [spikes](double x, double y, double z) {
-        return (spikes ? 100.0 / 1.3 : 1.0) * ppiray_test::Blob(x, y, z);
-      });
+    auto grid = ppiray_test::VoxelTetrahedra(
+      n, 1.0 / 8, origin, [](int, int, int) { return true; },
+      [spikes](double x, double y, double z)
+      { return (spikes ? 100.0 / 1.3 : 1.0) * ppiray_test::Blob(x, y, z); });
     ppiray_test::Scene scene(Size, Size);
     if (spikes)
     {
@@ -61,8 +60,8 @@ int TestGPURayCastIntegrationModes(int, char*[])
       mapper->SetIntegrationMode(mode);
       scene.Window->Render();
       const auto d = ppiray_test::Compare(ppiray_test::ReadRGB(scene.Window), exact);
-      std::cout << scene_name << " " << mapper->GetIntegrationModeAsString() << ": mean "
-                << d.Mean << " p99 " << d.P99 << " max " << d.Max;
+      std::cout << scene_name << " " << mapper->GetIntegrationModeAsString() << ": mean " << d.Mean
+                << " p99 " << d.P99 << " max " << d.Max;
       if (mode == vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION)
       {
         std::cout << " (table built in " << mapper->GetPreIntegrationTableBuildTime() << " s)";

@@ -6,13 +6,13 @@
 // scene in a multisampled window (VTK's default on many systems) must stop
 // the rays at the resolved depth too: same centre pixel within 2/255.
 
+#include "PPIRayBaseline.h"
 #include "PPIRayImageCompare.h"
 #include "PPIRayTestScenes.h"
 #include "vtkActor.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "PPIRayBaseline.h"
 #include "vtkSphereSource.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 

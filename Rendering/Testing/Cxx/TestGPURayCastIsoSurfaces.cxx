@@ -22,6 +22,7 @@
 // The baseline is a 2x2 window: tetrahedra, native hexahedra, subdivided
 // hexahedra (surfaces only), native hexahedra embedded in the volume.
 
+#include "PPIRayBaseline.h"
 #include "PPIRayImageCompare.h"
 #include "PPIRayReferenceImage.h"
 #include "PPIRayTestScenes.h"
@@ -36,7 +37,6 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkPiecewiseFunction.h"
-#include "PPIRayBaseline.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 #include "vtkTransformFilter.h"
@@ -195,7 +195,8 @@ Result RenderAndCompare(vtkUnstructuredGridGPURayCastMapper* mapper, vtkUnstruct
 // neighbourhood is all covered: facet edges of a shaded surface raise it.
 double Roughness(const std::vector<unsigned char>& rgb, int w, int h)
 {
-  auto luminance = [&](int x, int y) {
+  auto luminance = [&](int x, int y)
+  {
     const unsigned char* p = &rgb[3 * (static_cast<size_t>(y) * w + x)];
     return 0.3 * p[0] + 0.59 * p[1] + 0.11 * p[2];
   };
@@ -216,7 +217,7 @@ double Roughness(const std::vector<unsigned char>& rgb, int w, int h)
       if (covered)
       {
         sum += std::abs(4 * luminance(x, y) - luminance(x - 1, y) - luminance(x + 1, y) -
-          luminance(x, y - 1) - luminance(x, y + 1));
+                        luminance(x, y - 1) - luminance(x, y + 1));
         ++count;
       }
     }
@@ -285,8 +286,8 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
   const Result smooth = RenderAndCompare(hexMapper, hexes, false, nullptr, true);
   const double rough[2] = { Roughness(smooth.Image, Size, Size),
     Roughness(subdivided.Image, Size, Size) };
-  std::cout << "roughness (mean |Laplacian| of luminance): native " << rough[0]
-            << ", subdivided " << rough[1] << "\n";
+  std::cout << "roughness (mean |Laplacian| of luminance): native " << rough[0] << ", subdivided "
+            << rough[1] << "\n";
   // Measured 10.9 against 17.1 (the native surface keeps creases where the
   // trilinear gradient changes between cells); the subdivided one is also
   // far from the trilinear surface (p99 17/255 against the reference).

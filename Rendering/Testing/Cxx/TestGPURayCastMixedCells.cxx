@@ -14,14 +14,14 @@
 //     same cells given as hexahedra;
 //   - a baseline image.
 
+#include "PPIRayBaseline.h"
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
+#include "ppirayConformingTetrahedra.h"
 #include "vtkAppendFilter.h"
 #include "vtkCellType.h"
-#include "ppirayConformingTetrahedra.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
-#include "PPIRayBaseline.h"
 #include "vtkTetrahedralCellTextures.h"
 #include "vtkUnstructuredGridCellAdjacency.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
@@ -35,7 +35,7 @@
 
 namespace
 {
-constexpr int N = 4; // cells per axis
+constexpr int N = 4;                    // cells per axis
 constexpr int PyramidAsTetrahedra = -1; // a cell type of this test only
 
 // Deterministic value in [-1, 1] for an integer triple.
@@ -71,8 +71,8 @@ struct MixedBlock
         {
           const bool interior = i > 0 && i < N && j > 0 && j < N && k > 0 && k < N;
           const double s = interior ? 0.25 * h : 0.0;
-          this->Add({ i * h + s * Hash(i, j, k), j * h + s * Hash(j, k, i),
-            k * h + s * Hash(k, i, j) });
+          this->Add(
+            { i * h + s * Hash(i, j, k), j * h + s * Hash(j, k, i), k * h + s * Hash(k, i, j) });
         }
     struct Cell
     {
@@ -210,7 +210,7 @@ int TestGPURayCastMixedCells(int argc, char* argv[])
             << textures->GetNumberOfDegenerateTetrahedra() << ", non-manifold "
             << textures->GetNumberOfNonManifoldFaces() << "\n";
   if (textures->GetNumberOfTetrahedra() != expectedTets ||
-    textures->GetNumberOfSplitCells() != N * N * (1 + 2 + 6))
+      textures->GetNumberOfSplitCells() != N * N * (1 + 2 + 6))
   {
     errors += Fail("unexpected number of tetrahedra or split cells");
   }
@@ -280,8 +280,8 @@ int TestGPURayCastMixedCells(int argc, char* argv[])
   scene.Window->Render();
   const auto hexImage = ppiray_test::ReadRGB(scene.Window);
   const auto same = ppiray_test::Compare(voxelImage, hexImage);
-  std::cout << "voxels: " << voxelTets << " tetrahedra, image against hexahedra max "
-            << same.Max << "/255\n";
+  std::cout << "voxels: " << voxelTets << " tetrahedra, image against hexahedra max " << same.Max
+            << "/255\n";
   if (voxelTets != 6 * N * N * N || same.Max > 0 ||
       ppiray_test::Compare(voxelImage, image).Max == 0)
   {

@@ -3,9 +3,9 @@
 // times, so depth peeling needs several layers: at least 3 peels, a baseline
 // image, and 144 pixels against the exact per-ray CPU integral.
 
+#include "PPIRayBaseline.h"
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
-#include "PPIRayBaseline.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include <iostream>
@@ -14,7 +14,8 @@ int TestGPURayCastNonConvex(int argc, char* argv[])
 {
   const int n[3] = { 10, 6, 6 };
   const double origin[3] = { 0, 0, 0 };
-  auto keep = [](int i, int j, int k) {
+  auto keep = [](int i, int j, int k)
+  {
     const bool tunnel = j >= 2 && j < 4 && k >= 2 && k < 4 && i < 6;
     const bool gap = i == 6 || i == 7;
     return !tunnel && !gap;

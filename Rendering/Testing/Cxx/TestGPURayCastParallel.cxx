@@ -1,9 +1,9 @@
 // Parallel projection of the non-convex tunnel mesh, looking down the tunnel
 // at an angle: baseline image and 144 pixels against the exact CPU integral.
 
+#include "PPIRayBaseline.h"
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
-#include "PPIRayBaseline.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include <iostream>

@@ -168,10 +168,12 @@ vtkSmartPointer<vtkUnstructuredGrid> Part(
 vtkSmartPointer<vtkUnstructuredGrid> Box(
   vtkUnstructuredGrid* grid, const std::array<double, 3>& centre, const std::array<double, 3>& half)
 {
-  return Part(grid, [&](vtkIdType, const double* x) {
-    return std::abs(x[0] - centre[0]) <= half[0] && std::abs(x[1] - centre[1]) <= half[1] &&
-      std::abs(x[2] - centre[2]) <= half[2];
-  });
+  return Part(grid,
+    [&](vtkIdType, const double* x)
+    {
+      return std::abs(x[0] - centre[0]) <= half[0] && std::abs(x[1] - centre[1]) <= half[1] &&
+             std::abs(x[2] - centre[2]) <= half[2];
+    });
 }
 
 // Cells with repeated point ids (collapsed corners).
@@ -196,33 +198,35 @@ vtkSmartPointer<vtkUnstructuredGrid> WithoutFlatCells(vtkUnstructuredGrid* grid)
   grid->GetBounds(b);
   const double box = (b[1] - b[0]) * (b[3] - b[2]) * (b[5] - b[4]);
   const int around[6][2] = { { 1, 2 }, { 2, 3 }, { 3, 7 }, { 7, 4 }, { 4, 5 }, { 5, 1 } };
-  return Part(grid, [&](vtkIdType c, const double*) {
-    vtkIdType n;
-    const vtkIdType* pts;
-    grid->GetCellPoints(c, n, pts);
-    if (n != 8)
+  return Part(grid,
+    [&](vtkIdType c, const double*)
     {
-      return true;
-    }
-    double x[8][3];
-    for (int v = 0; v < 8; ++v)
-    {
-      grid->GetPoint(pts[v], x[v]);
-    }
-    double volume = 0;
-    for (const auto& ab : around)
-    {
-      double e[3][3];
-      for (int i = 0; i < 3; ++i)
+      vtkIdType n;
+      const vtkIdType* pts;
+      grid->GetCellPoints(c, n, pts);
+      if (n != 8)
       {
-        e[0][i] = x[6][i] - x[0][i];
-        e[1][i] = x[ab[0]][i] - x[0][i];
-        e[2][i] = x[ab[1]][i] - x[0][i];
+        return true;
       }
-      volume += std::abs(vtkMath::Determinant3x3(e));
-    }
-    return volume > 1e-12 * box;
-  });
+      double x[8][3];
+      for (int v = 0; v < 8; ++v)
+      {
+        grid->GetPoint(pts[v], x[v]);
+      }
+      double volume = 0;
+      for (const auto& ab : around)
+      {
+        double e[3][3];
+        for (int i = 0; i < 3; ++i)
+        {
+          e[0][i] = x[6][i] - x[0][i];
+          e[1][i] = x[ab[0]][i] - x[0][i];
+          e[2][i] = x[ab[1]][i] - x[0][i];
+        }
+        volume += std::abs(vtkMath::Determinant3x3(e));
+      }
+      return volume > 1e-12 * box;
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -342,7 +346,8 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
   }
   int errors = 0;
   int missing = 0;
-  auto folder = [&](const char* name) {
+  auto folder = [&](const char* name)
+  {
     const std::string path = root + "/" + name;
     if (root.empty() || !vtksys::SystemTools::FileIsDirectory(path))
     {
@@ -353,7 +358,8 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     return path;
   };
   // Images written next to the test's output, for a look at a failure.
-  auto save = [&](const std::string& name, const std::vector<unsigned char>& rgb, int size) {
+  auto save = [&](const std::string& name, const std::vector<unsigned char>& rgb, int size)
+  {
     ppiray_test::WritePNG(
       temporary + "/TestGPURayCastRealHexahedra" + name + ".png", rgb, size, size);
   };
@@ -361,7 +367,8 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
   // Renders `scene` (timed), prints cells, native hexahedra, peels and time,
   // compares with the baseline. Returns the image.
   auto check = [&](const std::string& name, vtkUnstructuredGrid* grid, ppiray_test::Scene& scene,
-                 vtkUnstructuredGridGPURayCastMapper* mapper) {
+                 vtkUnstructuredGridGPURayCastMapper* mapper)
+  {
     const double seconds = TimedRender(scene.Window);
     const auto image = ppiray_test::ReadRGB(scene.Window);
     save(name + "-gpu", image, Size);
@@ -379,8 +386,9 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
 
   // `part` against the reference, framed in the scene's view direction at
   // ReferenceSize, then the negative control (see the header comment).
-  auto referenceCheck = [&](const std::string& name, vtkUnstructuredGrid* part,
-                          ppiray_test::Scene& scene) {
+  auto referenceCheck =
+    [&](const std::string& name, vtkUnstructuredGrid* part, ppiray_test::Scene& scene)
+  {
     ppiray_test::Scene sub(ReferenceSize, ReferenceSize);
     sub.Volume->SetProperty(scene.Property);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
@@ -409,7 +417,7 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
               << ReferenceSize << ", reference " << seconds << " s: p99 " << e.P99 << " p99.9 "
               << e.P999 << " max " << e.Max << " mean " << e.Mean << " (1/255)\n";
     if (mapper->GetNumberOfHexahedra() != part->GetNumberOfCells() || e.P99 > P99Bound ||
-      e.P999 > P999Bound)
+        e.P999 > P999Bound)
     {
       errors +=
         Fail(name + ": part not native, or p99 or p99.9 against the reference above the bound");
@@ -418,15 +426,16 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     // view direction, a layer about one cell thick that every ray crosses.
     const double plane = vtkMath::Dot(centre.data(), direction);
     std::vector<double> offsets;
-    Part(part, [&](vtkIdType, const double* x) {
-      offsets.push_back(std::abs(vtkMath::Dot(x, direction) - plane));
-      return false;
-    });
+    Part(part,
+      [&](vtkIdType, const double* x)
+      {
+        offsets.push_back(std::abs(vtkMath::Dot(x, direction) - plane));
+        return false;
+      });
     std::nth_element(offsets.begin(), offsets.begin() + offsets.size() / 20, offsets.end());
     const double half = offsets[offsets.size() / 20];
-    auto holed = Part(part, [&](vtkIdType, const double* x) {
-      return std::abs(vtkMath::Dot(x, direction) - plane) > half;
-    });
+    auto holed = Part(part, [&](vtkIdType, const double* x)
+      { return std::abs(vtkMath::Dot(x, direction) - plane) > half; });
     mapper->SetInputData(holed);
     sub.Window->Render();
     const auto lost = ppiray_test::AgainstReference(ppiray_test::ReadRGB(sub.Window), exact);
@@ -463,7 +472,8 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     // stream, then the compressed air ahead of the fin and its shock; the
     // part: the leading edge of the fin, where the cells are smallest.
     { "BluntFin", "bluntfin",
-      [](const std::string& folder, std::string* error) {
+      [](const std::string& folder, std::string* error)
+      {
         return ppiray_test::ReadPLOT3D(
           folder + "/bluntfinxyz.bin", folder + "/bluntfinq.bin", 100, error);
       },
@@ -471,7 +481,9 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
         { 2.6, 0.95, 0.6, 0.3 }, { hi, 0.71, 0.02, 0.15 } },
       { { lo, 0.0 }, { 0.95, 0.0 }, { 1.2, 0.25 }, { 2.0, 0.6 }, { hi, 1.0 } }, 0.5,
       { -6.0, -15.0, 20.0 }, { 3.3, 4.2, 2.9 }, false, 1.3, 1,
-      [](vtkUnstructuredGrid* grid) { return Box(grid, { 0.0, 0.0, 2.0 }, { 1.0, 1.0, 1.0 }); } },
+      [](vtkUnstructuredGrid* grid) {
+        return Box(grid, { 0.0, 0.0, 2.0 }, { 1.0, 1.0, 1.0 });
+      } },
     // LOX Post, velocity magnitude: the slow wake behind the post most
     // opaque, the free stream (about 1.2) nearly clear, seen from above the
     // post so that rays pass its hole (at least two peels); the part: a ring
@@ -484,13 +496,14 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
         { 1.0, 0.95, 0.6, 0.3 }, { hi, 0.71, 0.02, 0.15 } },
       { { 0.0, 0.0 }, { 0.05, 0.0 }, { 0.4, 0.6 }, { 0.9, 0.05 }, { hi, 0.05 } }, 1.0,
       { -5.0, -10.0, 30.0 }, { 0.0, 0.0, 2.4 }, false, 4.0, 2,
-      [](vtkUnstructuredGrid* grid) { return Box(grid, { 0.0, 0.0, 2.4 }, { 1.0, 1.0, 0.5 }); } },
+      [](vtkUnstructuredGrid* grid) {
+        return Box(grid, { 0.0, 0.0, 2.4 }, { 1.0, 1.0, 0.5 });
+      } },
     // disk_out_ref, Temp: faint cool gas, the hot rotating disk opaque; small
     // enough to compare whole.
     { "Disk", "disk_out_ref",
-      [](const std::string& folder, std::string* error) {
-        return ppiray_test::ReadExodusHexahedra(folder + "/disk_out_ref.ex2", "Temp", error);
-      },
+      [](const std::string& folder, std::string* error)
+      { return ppiray_test::ReadExodusHexahedra(folder + "/disk_out_ref.ex2", "Temp", error); },
       { { lo, 0.23, 0.30, 0.75 }, { 450.0, 0.87, 0.87, 0.87 }, { 700.0, 0.95, 0.6, 0.3 },
         { hi, 0.71, 0.02, 0.15 } },
       { { lo, 0.04 }, { 320.0, 0.06 }, { 500.0, 0.3 }, { hi, 0.9 } }, 1.0, { 20.0, -25.0, -20.0 },
@@ -586,7 +599,7 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
               << mapper->GetNumberOfPeels() << " peels; warnings: [" << messages->Warnings
               << messages->Errors << "]\n";
     if (mapper->GetNumberOfHexahedra() != 46641 ||
-      messages->Warnings.find("969 zero-volume hexahedra skipped") == std::string::npos)
+        messages->Warnings.find("969 zero-volume hexahedra skipped") == std::string::npos)
     {
       errors += Fail("UNISIM: expected the 969 flat hexahedra skipped, 46641 native");
     }

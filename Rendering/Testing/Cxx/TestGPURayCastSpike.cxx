@@ -4,9 +4,9 @@
 // pixels checked against an exact per-ray CPU integration split at every
 // control point (vtkUnstructuredGridReferenceRenderer, via PPIRayPixelCheck.h).
 
+#include "PPIRayBaseline.h"
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
-#include "PPIRayBaseline.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include <iostream>
@@ -15,7 +15,8 @@ int TestGPURayCastSpike(int argc, char* argv[])
 {
   const int n[3] = { 8, 8, 8 };
   const double origin[3] = { 0, 0, 0 };
-  auto grid = ppiray_test::VoxelTetrahedra(n, 1.0 / 8, origin, [](int, int, int) { return true; },
+  auto grid = ppiray_test::VoxelTetrahedra(
+    n, 1.0 / 8, origin, [](int, int, int) { return true; },
     [](double x, double y, double z) { return 100.0 * ppiray_test::Blob(x, y, z) / 1.3; });
 
   ppiray_test::Scene scene(300, 300);
@@ -27,13 +28,13 @@ int TestGPURayCastSpike(int argc, char* argv[])
 
   int errors = 0;
   const auto image = ppiray_test::ReadRGB(scene.Window);
-  const auto check = ppiray_test::CheckPixels(
-    scene.Renderer, grid, scene.Property, image, 300, 300);
+  const auto check =
+    ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property, image, 300, 300);
   std::cout << "control points: "
             << scene.Property->GetRGBTransferFunction()->GetSize() +
-      scene.Property->GetScalarOpacity()->GetSize()
-            << ", pixels checked "
-            << check.Pixels << ", max difference " << check.MaxDifference << "/255\n";
+                 scene.Property->GetScalarOpacity()->GetSize()
+            << ", pixels checked " << check.Pixels << ", max difference " << check.MaxDifference
+            << "/255\n";
   // Bound: 8-bit rounding (0.5) plus the 0.999 early termination (0.26) plus
   // the Psi table's bilinear error; 2/255 leaves room for llvmpipe's float
   // rounding while any skipped spike shows as tens of levels.

@@ -119,7 +119,8 @@ int TestGPURayCastStability(int, char*[])
   // the cube of the longest edge).
   vtkNew<vtkPoints> lattice;
   unsigned int seed = 12345;
-  auto jitter = [&seed]() {
+  auto jitter = [&seed]()
+  {
     seed = seed * 1664525u + 1013904223u;
     return 1e-4 * ((seed >> 8) / 16777216.0 - 0.5);
   };
@@ -192,10 +193,10 @@ int TestGPURayCastStability(int, char*[])
 
   // Far from the origin: same picture as at the origin.
   const double far[3] = { 1.0e6, -2.0e6, 1.5e6 };
-  auto moved = ppiray_test::VoxelTetrahedra(n, 0.25, far, [](int, int, int) { return true; },
-    [&](double x, double y, double z) {
-      return ppiray_test::Blob(x - far[0], y - far[1], z - far[2]);
-    });
+  auto moved = ppiray_test::VoxelTetrahedra(
+    n, 0.25, far, [](int, int, int) { return true; },
+    [&](double x, double y, double z)
+    { return ppiray_test::Blob(x - far[0], y - far[1], z - far[2]); });
   MoveBoundaryOffLattice(moved, far);
   std::vector<unsigned char> atOrigin, atFar;
   RenderAndCheck(grid, views[3], noShift, &atOrigin);

@@ -7,8 +7,8 @@
 //  - table of size N, bilinear as the GPU samples it: max error over a 4x finer
 //    grid, must be below the bound documented for the default size (512).
 
-#include "vtkPsiTable.h"
 #include "ppirayVolumeIntegrals.h"
+#include "vtkPsiTable.h"
 
 #include <cmath>
 #include <cstdio>
@@ -37,15 +37,15 @@ double Bilinear(const std::vector<float>& table, int n, double gf, double gb)
   const double fx = x - i, fy = y - j;
   auto at = [&](int ii, int jj) { return static_cast<double>(table[jj * n + ii]); };
   return (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) +
-    fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
+         fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
 }
 }
 
 int TestPsiTable(int, char*[])
 {
   int errors = 0;
-  auto check = [&](double got, double want, double tolerance, const char* what, double a,
-                 double b) {
+  auto check = [&](double got, double want, double tolerance, const char* what, double a, double b)
+  {
     if (!(std::abs(got - want) <= tolerance))
     {
       std::printf("FAILED %s at a=%g b=%g: %.17g vs %.17g\n", what, a, b, got, want);

@@ -51,23 +51,22 @@ using Vec = std::array<long double, 3>;
 // f(u, v, w) = c0 + c1 u + c2 v + c3 w + c4 uv + c5 vw + c6 uw + c7 uvw.
 long double Trilinear(const std::array<long double, 8>& c, const Vec& p)
 {
-  return c[0] + c[1] * p[0] + c[2] * p[1] + c[3] * p[2] + c[4] * p[0] * p[1] +
-    c[5] * p[1] * p[2] + c[6] * p[0] * p[2] + c[7] * p[0] * p[1] * p[2];
+  return c[0] + c[1] * p[0] + c[2] * p[1] + c[3] * p[2] + c[4] * p[0] * p[1] + c[5] * p[1] * p[2] +
+         c[6] * p[0] * p[2] + c[7] * p[0] * p[1] * p[2];
 }
 
 // The cubic of f(q + x r) and its value, by the shader's own rayCubic() and
 // cubicValue() (hexahedron_field_fs.glsl compiled as C++ through GLM, in
 // float as on the GPU and in double).
-template <typename Vec4, typename Vec3, typename Coefficients, typename Point>
-Vec4 RayCubic(const Coefficients& c, const Point& q, const Point& r,
-  Vec4 (*rayCubic)(Vec4, Vec4, Vec3, Vec3))
+template<typename Vec4, typename Vec3, typename Coefficients, typename Point>
+Vec4 RayCubic(
+  const Coefficients& c, const Point& q, const Point& r, Vec4 (*rayCubic)(Vec4, Vec4, Vec3, Vec3))
 {
-  return rayCubic(
-    Vec4(c[0], c[1], c[2], c[3]), Vec4(c[4], c[5], c[6], c[7]), Vec3(q[0], q[1], q[2]),
-    Vec3(r[0], r[1], r[2]));
+  return rayCubic(Vec4(c[0], c[1], c[2], c[3]), Vec4(c[4], c[5], c[6], c[7]),
+    Vec3(q[0], q[1], q[2]), Vec3(r[0], r[1], r[2]));
 }
 
-template <typename T, size_t N>
+template<typename T, size_t N>
 std::array<T, N> Cast(const std::array<long double, N>& a)
 {
   std::array<T, N> out;
@@ -137,8 +136,8 @@ int TestRayCubicPrecision(int, char*[])
     {
       const long double d = distances[k];
       const Vec eye = { entry[0] - d * r[0], entry[1] - d * r[1], entry[2] - d * r[2] };
-      const glm::vec4 atEntry = RayCubic(
-        Cast<float>(c), Cast<float>(entry), Cast<float>(r), &glsl32::rayCubic);
+      const glm::vec4 atEntry =
+        RayCubic(Cast<float>(c), Cast<float>(entry), Cast<float>(r), &glsl32::rayCubic);
       const glm::vec4 atEyeF =
         RayCubic(Cast<float>(c), Cast<float>(eye), Cast<float>(r), &glsl32::rayCubic);
       const glm::dvec4 atEyeD =

@@ -31,7 +31,8 @@ Comparison CompareAll(vtkUnstructuredGrid* grid, const std::function<void(vtkVol
 {
   Comparison result;
   std::vector<unsigned char> reference;
-  auto render = [&](vtkUnstructuredGridVolumeMapper* mapper) {
+  auto render = [&](vtkUnstructuredGridVolumeMapper* mapper)
+  {
     ppiray_test::Scene scene(Size, Size);
     tf(scene.Property);
     scene.Show(mapper, grid, { 2.0, 1.5, 2.5 }, { 0.5, 0.5, 0.5 });
@@ -72,32 +73,34 @@ int TestReferenceRenderer(int, char*[])
   const double origin[3] = { 0, 0, 0 };
   auto smoothGrid = ppiray_test::VoxelTetrahedra(
     n, 1.0 / 8, origin, [](int, int, int) { return true; }, ppiray_test::Blob);
-  auto spikeGrid = ppiray_test::VoxelTetrahedra(n, 1.0 / 8, origin,
-    [](int, int, int) { return true; },
+  auto spikeGrid = ppiray_test::VoxelTetrahedra(
+    n, 1.0 / 8, origin, [](int, int, int) { return true; },
     [](double x, double y, double z) { return 100.0 * ppiray_test::Blob(x, y, z) / 1.3; });
   const int m[3] = { 10, 6, 6 };
-  auto tunnel = ppiray_test::VoxelTetrahedra(m, 0.1, origin,
-    [](int i, int j, int k) {
-      return !(j >= 2 && j < 4 && k >= 2 && k < 4 && i < 6) && i != 6 && i != 7;
-    },
+  auto tunnel = ppiray_test::VoxelTetrahedra(
+    m, 0.1, origin,
+    [](int i, int j, int k)
+    { return !(j >= 2 && j < 4 && k >= 2 && k < 4 && i < 6) && i != 6 && i != 7; },
     ppiray_test::Blob);
 
   int errors = 0;
-  const auto smooth = CompareAll(smoothGrid,
-    [](vtkVolumeProperty* p) { ppiray_test::SmoothTransferFunction(p, 0.0, 1.3, 0.8, 0.2); },
-    true, "smooth");
+  const auto smooth = CompareAll(
+    smoothGrid,
+    [](vtkVolumeProperty* p) { ppiray_test::SmoothTransferFunction(p, 0.0, 1.3, 0.8, 0.2); }, true,
+    "smooth");
   // VTK's mappers on a smooth function: about a level on average (measured
   // 0.5-1.1), p99 within a dozen levels (their tetrahedra and line artefacts).
   if (smooth.ZSweep.Mean > 2.0 || smooth.RayCast.Mean > 2.0 || smooth.ZSweep.P99 > 15 ||
-    smooth.RayCast.P99 > 15)
+      smooth.RayCast.P99 > 15)
   {
     std::cerr << "FAILED: VTK's mappers and the reference disagree on a smooth function\n";
     ++errors;
   }
   const auto spikes = CompareAll(spikeGrid, ppiray_test::SpikeTransferFunction, true, "spikes");
-  const auto nonConvex = CompareAll(tunnel,
-    [](vtkVolumeProperty* p) { ppiray_test::SmoothTransferFunction(p, 0.0, 1.3, 0.7, 0.1); },
-    false, "non-convex");
+  const auto nonConvex = CompareAll(
+    tunnel,
+    [](vtkVolumeProperty* p) { ppiray_test::SmoothTransferFunction(p, 0.0, 1.3, 0.7, 0.1); }, false,
+    "non-convex");
   // PPIRay: the 8-bit rounding (0.5) plus early termination and the Psi
   // table (< 0.3): at most one level anywhere.
   for (const auto* c : { &smooth, &spikes, &nonConvex })

@@ -91,7 +91,7 @@ int Check(const Case& test, vtkColorTransferFunction* color)
   for (size_t i = 0; i + 1 < values.size(); ++i)
   {
     if (values[i] == values[i + 1] ||
-      values[i + 1] - values[i] <= 1e-11 * std::max(1.0, std::abs(values[i])))
+        values[i + 1] - values[i] <= 1e-11 * std::max(1.0, std::abs(values[i])))
     {
       jumps.push_back(values[i]);
     }
@@ -192,13 +192,14 @@ int Check(const Case& test, vtkColorTransferFunction* color)
 int TestTransferFunctionControlPoints(int, char*[])
 {
   std::vector<Case> cases;
-  cases.push_back({ "RGB, curved opacity (sharpness)",
-    [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o) {
-      ThreeNodes(c);
-      o->AddPoint(10.0, 0.0, 0.3, 0.8);
-      o->AddPoint(60.0, 0.9);
-      o->AddPoint(80.0, 0.2);
-    } });
+  cases.push_back(
+    { "RGB, curved opacity (sharpness)", [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o)
+      {
+        ThreeNodes(c);
+        o->AddPoint(10.0, 0.0, 0.3, 0.8);
+        o->AddPoint(60.0, 0.9);
+        o->AddPoint(80.0, 0.2);
+      } });
   for (const char* space : { "HSV", "HSV wrapping", "Lab", "CIEDE2000", "Diverging" })
   {
     const std::string name = space;
@@ -208,48 +209,55 @@ int TestTransferFunctionControlPoints(int, char*[])
     // p99 by a step of 1/255.
     const double bound = name == "CIEDE2000" ? 5.0 : 0.0;
     const double p99Bound = name == "CIEDE2000" ? 1.0 : 0.0;
-    cases.push_back({ name, [name](vtkColorTransferFunction* c, vtkPiecewiseFunction* o) {
-                       ThreeNodes(c);
-                       if (name == "HSV" || name == "HSV wrapping")
-                       {
-                         c->SetColorSpaceToHSV();
-                         c->SetHSVWrap(name == "HSV wrapping");
-                       }
-                       else if (name == "Lab")
-                       {
-                         c->SetColorSpaceToLab();
-                       }
-                       else if (name == "CIEDE2000")
-                       {
-                         c->SetColorSpaceToLabCIEDE2000();
-                       }
-                       else
-                       {
-                         c->SetColorSpaceToDiverging();
-                       }
-                       Ramp(o, 0.0, 100.0);
-                     },
+    cases.push_back({ name,
+      [name](vtkColorTransferFunction* c, vtkPiecewiseFunction* o)
+      {
+        ThreeNodes(c);
+        if (name == "HSV" || name == "HSV wrapping")
+        {
+          c->SetColorSpaceToHSV();
+          c->SetHSVWrap(name == "HSV wrapping");
+        }
+        else if (name == "Lab")
+        {
+          c->SetColorSpaceToLab();
+        }
+        else if (name == "CIEDE2000")
+        {
+          c->SetColorSpaceToLabCIEDE2000();
+        }
+        else
+        {
+          c->SetColorSpaceToDiverging();
+        }
+        Ramp(o, 0.0, 100.0);
+      },
       0, bound, p99Bound });
   }
-  cases.push_back({ "Cool to Warm (ParaView default)",
-    [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o) {
-      CoolToWarm(c, -3.0, 7.0);
-      Ramp(o, -3.0, 7.0);
-    } });
-  cases.push_back({ "Step colour space", [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o) {
-                     ThreeNodes(c);
-                     c->SetColorSpaceToStep();
-                     Ramp(o, 0.0, 100.0);
-                   },
+  cases.push_back(
+    { "Cool to Warm (ParaView default)", [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o)
+      {
+        CoolToWarm(c, -3.0, 7.0);
+        Ramp(o, -3.0, 7.0);
+      } });
+  cases.push_back({ "Step colour space",
+    [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o)
+    {
+      ThreeNodes(c);
+      c->SetColorSpaceToStep();
+      Ramp(o, 0.0, 100.0);
+    },
     2 });
-  cases.push_back({ "log10 scale", [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o) {
-                     c->AddRGBPoint(1.0, 0.1, 0.1, 0.9);
-                     c->AddRGBPoint(1000.0, 0.9, 0.2, 0.1);
-                     c->SetScaleToLog10();
-                     Ramp(o, 1.0, 1000.0);
-                   } });
+  cases.push_back({ "log10 scale", [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o)
+    {
+      c->AddRGBPoint(1.0, 0.1, 0.1, 0.9);
+      c->AddRGBPoint(1000.0, 0.9, 0.2, 0.1);
+      c->SetScaleToLog10();
+      Ramp(o, 1.0, 1000.0);
+    } });
   cases.push_back({ "clamping off (zero outside)",
-    [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o) {
+    [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o)
+    {
       ThreeNodes(c);
       c->ClampingOff();
       o->AddPoint(10.0, 0.3);
@@ -258,21 +266,23 @@ int TestTransferFunctionControlPoints(int, char*[])
     },
     2 });
   cases.push_back({ "repeated nodes (steps)",
-    [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o) {
-                     c->AllowDuplicateScalarsOn();
-                     c->AddRGBPoint(0.0, 0.1, 0.1, 0.9);
-                     c->AddRGBPoint(50.0, 0.1, 0.9, 0.1);
-                     c->AddRGBPoint(50.0, 0.9, 0.1, 0.1);
-                     c->AddRGBPoint(100.0, 0.9, 0.9, 0.1);
-                     o->AllowDuplicateScalarsOn();
-                     o->AddPoint(0.0, 0.1);
-                     o->AddPoint(30.0, 0.1);
-                     o->AddPoint(30.0, 0.9);
-                     o->AddPoint(100.0, 0.5);
-                   },
+    [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o)
+    {
+      c->AllowDuplicateScalarsOn();
+      c->AddRGBPoint(0.0, 0.1, 0.1, 0.9);
+      c->AddRGBPoint(50.0, 0.1, 0.9, 0.1);
+      c->AddRGBPoint(50.0, 0.9, 0.1, 0.1);
+      c->AddRGBPoint(100.0, 0.9, 0.9, 0.1);
+      o->AllowDuplicateScalarsOn();
+      o->AddPoint(0.0, 0.1);
+      o->AddPoint(30.0, 0.1);
+      o->AddPoint(30.0, 0.9);
+      o->AddPoint(100.0, 0.5);
+    },
     2 });
   cases.push_back({ "sharpness 1 (step inside a segment)",
-    [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o) {
+    [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o)
+    {
       ThreeNodes(c);
       o->AddPoint(0.0, 0.1, 0.3, 1.0);
       o->AddPoint(100.0, 0.9);
@@ -291,7 +301,8 @@ int TestTransferFunctionControlPoints(int, char*[])
   discrete->DiscretizeOn();
   discrete->SetNumberOfValues(8);
   errors += Check({ "Discretizable (Discretize on)",
-                    [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o) {
+                    [](vtkColorTransferFunction* c, vtkPiecewiseFunction* o)
+                    {
                       CoolToWarm(c, 0.0, 1.0);
                       Ramp(o, 0.0, 1.0);
                     } },
@@ -311,8 +322,8 @@ int TestTransferFunctionControlPoints(int, char*[])
   cp->Build(property);
   if (!cp->GetTruncated() || cp->GetNumberOfControlPoints() > 4)
   {
-    std::printf("FAILED: a 4-point budget was not reported (%d points)\n",
-      cp->GetNumberOfControlPoints());
+    std::printf(
+      "FAILED: a 4-point budget was not reported (%d points)\n", cp->GetNumberOfControlPoints());
     ++errors;
   }
   return errors == 0 ? 0 : 1;
