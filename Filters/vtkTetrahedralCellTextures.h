@@ -83,6 +83,12 @@ public:
   ///@}
 
   vtkIdType GetNumberOfTetrahedra() const { return static_cast<vtkIdType>(this->CellIds.size()); }
+  /** Point ids of the tetrahedra, 4 each (into the grid's points). */
+  const std::vector<vtkIdType>& GetTetrahedra() const { return this->Tets; }
+  /** The grid's points relative to GetOrigin(), 3 each, in double. */
+  const std::vector<double>& GetLocalPoints() const { return this->LocalPoints; }
+  /** Whether tetrahedron t is flat (zero volume; kept, crossed with zero length). */
+  bool IsFlat(vtkIdType t) const { return this->Degenerate[t] != 0; }
   /** Cell id in the input grid of each tetrahedron. */
   const std::vector<vtkIdType>& GetCellIds() const { return this->CellIds; }
   /** Centre of the bounds: all coordinates below are relative to it. */

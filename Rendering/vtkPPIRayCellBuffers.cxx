@@ -35,6 +35,17 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
 }
 
 //------------------------------------------------------------------------------
+void vtkPPIRayCellBuffers::AppendSection(
+  const std::vector<glm::dvec3>& triangles, vtkIdType cell, std::vector<float>& vertices)
+{
+  for (const glm::dvec3& x : triangles)
+  {
+    vertices.insert(vertices.end(), { static_cast<float>(x.x), static_cast<float>(x.y),
+                                      static_cast<float>(x.z), static_cast<float>(cell) });
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkPPIRayCellBuffers::BuildField(vtkDataArray* values, bool cellData, vtkObject* reporter)
 {
   this->FieldOnGPU = false;

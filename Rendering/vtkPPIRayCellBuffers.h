@@ -20,6 +20,9 @@
 #include "vtkPPIRayBufferTexture.h" // for vtkPPIRayBufferTexture
 #include "vtkType.h"                // for vtkIdType
 
+#include <glm/vec3.hpp> // for glm::dvec3
+#include <glm/vec4.hpp> // for glm::dvec4
+
 #include <string> // for std::string
 #include <vector> // for std::vector
 
@@ -102,6 +105,16 @@ public:
    */
   virtual std::string GetMarchShader(int hexahedronMode) const = 0;
 
+  /** Every cell lies within this distance of GetOrigin(). */
+  virtual double GetBoundingRadius() const = 0;
+
+  /**
+   * The sections of the cells cut by the plane n . x = d (plane = (n, d),
+   * local frame) as triangles: 3 vertices each, 4 floats per vertex (x, y,
+   * z, cell index) appended to `vertices` (ppirayPlaneSection.h).
+   */
+  virtual void PlaneSection(const glm::dvec4& plane, std::vector<float>& vertices) const = 0;
+
   /** Uploads what was rebuilt since the last upload; false (error reported) on failure. */
   bool Upload(vtkOpenGLRenderWindow* context, vtkObject* reporter);
   int GetGeometryUploadCount() const { return this->GeometryUploadCount; }
@@ -136,6 +149,9 @@ protected:
   virtual Arrays GetArrays() const = 0;
   // Builds the field texels; returns the number of cells touching a NaN value.
   virtual vtkIdType ComputeField(vtkDataArray* values, bool cellData) = 0;
+  // Appends a cell's section triangles to PlaneSection()'s vertices.
+  static void AppendSection(
+    const std::vector<glm::dvec3>& triangles, vtkIdType cell, std::vector<float>& vertices);
   // Warns about the folded faces of a tangled mesh.
   void ReportFoldedFaces(vtkIdType folded, vtkObject* reporter) const;
 

@@ -18,6 +18,8 @@
 #include "composite_fs.h"
 #include "entry_fs.h"
 #include "entry_vs.h"
+#include "section_fs.h"
+#include "section_vs.h"
 
 namespace
 {
@@ -86,6 +88,9 @@ void vtkPPIRayDepthPeeling::ReleaseGraphicsResources(vtkWindow* window)
     this->CompositeQuad->ReleaseGraphicsResources(window);
     this->CompositeQuad.reset();
   }
+  this->SectionProgram = nullptr;
+  this->SectionVAO->ReleaseGraphicsResources();
+  this->SectionVertices->ReleaseGraphicsResources();
 }
 
 //------------------------------------------------------------------------------
@@ -256,10 +261,15 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
   fbo->RemoveColorAttachment(1);
 
   int peel = 0;
-  bool entered = false;
-  for (; peel < frame.MaximumPeels; ++peel)
+  if (frame.Section && !frame.Section->empty() && this->EnterAtNearPlane(context, frame, reporter))
   {
-    entered = this->Enter(context, frame, cells, peel);
+    this->March(context, march, marchInputs);
+    ++peel;
+  }
+  bool entered = false;
+  for (int layer = 0; peel < frame.MaximumPeels; ++peel, ++layer)
+  {
+    entered = this->Enter(context, frame, cells, layer == 0);
     if (!entered)
     {
       break;
@@ -275,7 +285,7 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
 
 //------------------------------------------------------------------------------
 bool vtkPPIRayDepthPeeling::Enter(
-  vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayCellBuffers& cells, int peel)
+  vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayCellBuffers& cells, bool firstLayer)
 {
   vtkOpenGLState* state = context->GetState();
   vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
@@ -302,7 +312,7 @@ bool vtkPPIRayDepthPeeling::Enter(
     entry->SetUniformi(names[i], inputs[i]->GetTextureUnit());
   }
   entry->SetUniformMatrix4x4("localToClip", const_cast<float*>(frame.LocalToClip));
-  entry->SetUniformi("firstLayer", peel == 0 ? 1 : 0);
+  entry->SetUniformi("firstLayer", firstLayer ? 1 : 0);
   entry->SetUniformf("terminationAlpha", frame.TerminationAlpha);
   this->EntryVAO->Bind();
   cells.GetBoundaryTriangles()->Bind();
@@ -319,6 +329,44 @@ bool vtkPPIRayDepthPeeling::Enter(
   GLuint samplesPassed = 0;
   glGetQueryObjectuiv(this->Query, GL_QUERY_RESULT, &samplesPassed);
   return samplesPassed > 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPPIRayDepthPeeling::EnterAtNearPlane(
+  vtkOpenGLRenderWindow* context, const Frame& frame, vtkObject* reporter)
+{
+  vtkOpenGLShaderCache* cache = context->GetShaderCache();
+  if (this->SectionProgram)
+  {
+    cache->ReadyShaderProgram(this->SectionProgram);
+  }
+  else
+  {
+    this->SectionProgram = cache->ReadyShaderProgram(section_vs, section_fs, "");
+  }
+  if (!this->SectionProgram ||
+      !this->SectionVertices->Upload(*frame.Section, vtkOpenGLBufferObject::ArrayBuffer))
+  {
+    vtkErrorWithObjectMacro(reporter, "Could not draw the near plane's sections.");
+    return false;
+  }
+  vtkOpenGLState* state = context->GetState();
+  vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
+  fbo->RemoveDepthAttachment();
+  fbo->AddColorAttachment(0, this->EntryTexture);
+  fbo->ActivateDrawBuffers(1);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_CULL_FACE);
+  this->SectionProgram->SetUniformMatrix4x4("localToClip", const_cast<float*>(frame.LocalToClip));
+  this->SectionVAO->Bind();
+  this->SectionVAO->AddAttributeArray(this->SectionProgram, this->SectionVertices, "vertexMC", 0,
+    4 * sizeof(float), VTK_FLOAT, 4, false);
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(frame.Section->size() / 4));
+  this->SectionVAO->Release();
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -5,7 +5,9 @@
  * Owns the render targets (sized to the viewport), the entry program and
  * its vertex array, the occlusion query and the composite program. A frame:
  * VTK's depth buffer under the viewport is copied (opaque geometry stops the
- * rays); then per peel an entry pass rasterizes the next layer of
+ * rays); where the near plane cuts the mesh, a first march starts each ray
+ * there in the cell whose section covers the pixel (section_vs.glsl,
+ * section_fs.glsl); then per peel an entry pass rasterizes the next layer of
  * front-facing boundary triangles (entry_vs.glsl, entry_fs.glsl) and the
  * march pass integrates from there (a full-screen quad of the march program,
  * its cell and transfer-function inputs bound by the caller), composited
@@ -45,6 +47,9 @@ public:
     float LocalToClip[16];     // column-major: the mesh's local frame to clip space
     float TerminationAlpha;    // a pixel this opaque takes no more peels
     int MaximumPeels;
+    // The sections of the cells the near plane cuts (PlaneSection(): x, y,
+    // z, cell per vertex), or null: the first march starts there.
+    const std::vector<float>* Section = nullptr;
   };
   /** Binds the march program's inputs other than the peeling's own. */
   using MarchInputs = std::function<void(vtkShaderProgram*, std::vector<vtkTextureObject*>&)>;
@@ -72,8 +77,10 @@ private:
     vtkOpenGLRenderWindow* context, int source, const Frame& frame, vtkObject* reporter);
   // The next layer of boundary triangles into EntryTexture; whether any
   // fragment entered.
-  bool Enter(
-    vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayCellBuffers& cells, int peel);
+  bool Enter(vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayCellBuffers& cells,
+    bool firstLayer);
+  // The sections of the cells cut by the near plane into EntryTexture.
+  bool EnterAtNearPlane(vtkOpenGLRenderWindow* context, const Frame& frame, vtkObject* reporter);
   void March(
     vtkOpenGLRenderWindow* context, vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs);
   void Composite(vtkOpenGLRenderWindow* context, const Frame& frame);
@@ -95,6 +102,10 @@ private:
   vtkOpenGLBufferObject* EntryPoints = nullptr; // the buffer EntryVAO reads
   int EntryPointsUpload = -1;                   // its upload count then
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+
+  vtkShaderProgram* SectionProgram = nullptr; // owned by the shader cache
+  vtkNew<vtkOpenGLVertexArrayObject> SectionVAO;
+  vtkNew<vtkOpenGLBufferObject> SectionVertices;
 };
 
 #endif

@@ -4,6 +4,8 @@
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
+#include "ppirayPlaneSection.h"
+
 #include "hexahedron_accurate_fs.h"
 #include "hexahedron_fast_fs.h"
 #include "hexahedron_field_fs.h"
@@ -99,4 +101,28 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
   }
   this->ReportFoldedFaces(hexes.GetNumberOfFoldedFaces(), reporter);
   return BuildResult::Built;
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayHexahedralCellBuffers::PlaneSection(
+  const glm::dvec4& plane, std::vector<float>& vertices) const
+{
+  const vtkHexahedralCellTextures& cells = *this->Cells;
+  const float* corners = cells.GetCorners().data();
+  const int stride = 4 * vtkHexahedralCellTextures::CornerTexels();
+  std::vector<glm::dvec3> triangles;
+  for (vtkIdType h = 0; h < cells.GetNumberOfHexahedra(); ++h)
+  {
+    glm::dvec3 p[8];
+    for (int v = 0; v < 8; ++v)
+    {
+      const float* x = corners + stride * h + 3 * v;
+      p[v] = glm::dvec3(x[0], x[1], x[2]);
+    }
+    triangles.clear();
+    if (ppiray::HexahedronSection(p, plane, triangles))
+    {
+      AppendSection(triangles, h, vertices);
+    }
+  }
 }

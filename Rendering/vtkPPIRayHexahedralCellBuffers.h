@@ -29,6 +29,8 @@ public:
   vtkIdType GetNumberOfCells() const override { return this->Cells->GetNumberOfHexahedra(); }
   double GetMaximumSegmentLength() const override { return this->Cells->GetMaximumCellDiameter(); }
   std::string GetMarchShader(int hexahedronMode) const override;
+  double GetBoundingRadius() const override { return 0.5 * this->Cells->GetLength(); }
+  void PlaneSection(const glm::dvec4& plane, std::vector<float>& vertices) const override;
 
 protected:
   Arrays GetArrays() const override

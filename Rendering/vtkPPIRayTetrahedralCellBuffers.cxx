@@ -4,6 +4,8 @@
 #include "vtkShaderProgram.h"
 #include "vtkUnstructuredGrid.h"
 
+#include "ppirayPlaneSection.h"
+
 #include "march_common_fs.h"
 #include "march_fs.h"
 
@@ -104,4 +106,32 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayTetrahedralCellBuffers::BuildGeometry
   }
   this->ReportFoldedFaces(cells.GetNumberOfFoldedFaces(), reporter);
   return BuildResult::Built;
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayTetrahedralCellBuffers::PlaneSection(
+  const glm::dvec4& plane, std::vector<float>& vertices) const
+{
+  const vtkTetrahedralCellTextures& cells = *this->Cells;
+  const std::vector<vtkIdType>& tets = cells.GetTetrahedra();
+  const double* local = cells.GetLocalPoints().data();
+  std::vector<glm::dvec3> triangles;
+  for (vtkIdType t = 0; t < cells.GetNumberOfTetrahedra(); ++t)
+  {
+    if (cells.IsFlat(t))
+    {
+      continue; // no area to start in
+    }
+    glm::dvec3 p[4];
+    for (int v = 0; v < 4; ++v)
+    {
+      const double* x = local + 3 * tets[4 * t + v];
+      p[v] = glm::dvec3(x[0], x[1], x[2]);
+    }
+    triangles.clear();
+    if (ppiray::TetrahedronSection(p, plane, triangles))
+    {
+      AppendSection(triangles, t, vertices);
+    }
+  }
 }

@@ -25,6 +25,8 @@ public:
   vtkIdType GetNumberOfCells() const override { return this->Cells->GetNumberOfTetrahedra(); }
   double GetMaximumSegmentLength() const override { return this->Cells->GetMaximumEdgeLength(); }
   std::string GetMarchShader(int hexahedronMode) const override;
+  double GetBoundingRadius() const override { return 0.5 * this->Cells->GetLength(); }
+  void PlaneSection(const glm::dvec4& plane, std::vector<float>& vertices) const override;
 
   /** Tetrahedra rendered with a volume (flat ones are crossed, not counted). */
   vtkIdType GetNumberOfTetrahedra() const

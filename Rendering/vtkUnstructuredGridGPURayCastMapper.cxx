@@ -23,8 +23,12 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 vtkStandardNewMacro(vtkUnstructuredGridGPURayCastMapper);
 
@@ -55,6 +59,7 @@ public:
   vtkPPIRayIsoSurfaceUniforms IsoSurfaces;
   vtkPPIRayMarchShader MarchShader;
   vtkPPIRayDepthPeeling Peeling;
+  std::vector<float> Section; // this frame's near-plane sections
 
   void ReleaseGraphicsResources(vtkWindow* window)
   {
@@ -89,6 +94,23 @@ bool FiniteCoordinates(vtkPoints* points)
     }
   }
   return true;
+}
+
+// The near plane (n, d), n . x = d, n unit and towards the far plane, in
+// the frame `clipToLocal` maps clip space to.
+glm::dvec4 NearPlane(vtkMatrix4x4* clipToLocal)
+{
+  auto unproject = [clipToLocal](double x, double y, double z)
+  {
+    const double clip[4] = { x, y, z, 1.0 };
+    double local[4];
+    clipToLocal->MultiplyPoint(clip, local);
+    return glm::dvec3(local[0], local[1], local[2]) / local[3];
+  };
+  const glm::dvec3 a = unproject(-1, -1, -1);
+  glm::dvec3 n = glm::normalize(glm::cross(unproject(1, -1, -1) - a, unproject(-1, 1, -1) - a));
+  n = glm::dot(n, unproject(0, 0, 1) - a) < 0 ? -n : n;
+  return glm::dvec4(n, glm::dot(n, a));
 }
 
 // Column-major float copy of a row-major VTK matrix, for glUniformMatrix4fv.
@@ -386,6 +408,15 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   ColumnMajor(clipToLocal, clipToLocalF);
   frame.TerminationAlpha = static_cast<float>(this->TerminationOpacity);
   frame.MaximumPeels = this->MaximumNumberOfPeels;
+  // A camera inside the mesh: rays start at the near plane in the cells it
+  // cuts (none when it passes outside the mesh's bounding sphere).
+  in.Section.clear();
+  const glm::dvec4 nearPlane = NearPlane(clipToLocal);
+  if (std::abs(nearPlane.w) < in.Cells->GetBoundingRadius())
+  {
+    in.Cells->PlaneSection(nearPlane, in.Section);
+  }
+  frame.Section = &in.Section;
   const double cells = static_cast<double>(in.Cells->GetNumberOfCells());
   const int maximumSteps =
     this->MaximumNumberOfSteps > 0

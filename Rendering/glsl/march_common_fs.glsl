@@ -28,13 +28,15 @@ const float INFINITY = 3.0e38;
 // Passes the earlier peels' colour and exit through (in case this pixel has no
 // entry) and returns the boundary face code of the triangle the ray enters by
 // in this peel, or -1. `resume`: where the earlier peel left the mesh; the
-// march starts no earlier than that (entry_fs.glsl says why).
-int enterPeel(ivec2 pixel, out vec4 before, out float resume)
+// march starts no earlier than that (entry_fs.glsl says why). `startCell`:
+// the cell the ray starts in at the near plane (section_fs.glsl), or -1.
+int enterPeel(ivec2 pixel, out vec4 before, out float resume, out int startCell)
 {
   before = texelFetch(previousAccumulated, pixel, 0);
   float entry = texelFetch(entryTriangle, pixel, 0).r;
   fragOutput0 = before;
   fragOutput1 = texelFetch(previousExit, pixel, 0);
   resume = fragOutput1.r;
+  startCell = entry < -0.5 ? int(-entry) - 1 : -1;
   return entry < 0.5 ? -1 : texelFetch(boundaryFaces, int(entry) - 1).r;
 }

@@ -140,8 +140,9 @@ void main()
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 before;
   float resume;
-  int cellFace = enterPeel(pixel, before, resume);
-  if (cellFace < 0)
+  int startCell;
+  int cellFace = enterPeel(pixel, before, resume, startCell);
+  if (cellFace < 0 && startCell < 0)
   {
     return;
   }
@@ -153,20 +154,27 @@ void main()
   // Opaque geometry stops the ray at its depth.
   float tStop = opaqueStop(opaqueDepth, pixel, ndc, origin, direction);
 
-  int cell = cellFace / FACES;
-  int entryFace = cellFace - FACES * cell;
-  vec4 plane = facePlane(cell, entryFace);
-  if (plane.w > FLAT_CELL)
+  // Into the first cell: through its entry face, or already in it at the
+  // near plane (t = 0) when the ray starts inside the mesh.
+  int cell = startCell;
+  int entryFace = -1;
+  float t = resume;
+  if (startCell < 0)
   {
-    // A flat cell on the boundary: the plane of its entry triangle.
-    vec3 a = facePlane(cell, (entryFace + 1) & 3).xyz;
-    vec3 n = cross(facePlane(cell, (entryFace + 2) & 3).xyz - a,
-      facePlane(cell, (entryFace + 3) & 3).xyz - a);
-    n = dot(n, direction) > 0.0 ? -n : n;
-    plane = vec4(n, dot(n, a));
+    cell = cellFace / FACES;
+    entryFace = cellFace - FACES * cell;
+    vec4 plane = facePlane(cell, entryFace);
+    if (plane.w > FLAT_CELL)
+    {
+      // A flat cell on the boundary: the plane of its entry triangle.
+      vec3 a = facePlane(cell, (entryFace + 1) & 3).xyz;
+      vec3 n = cross(facePlane(cell, (entryFace + 2) & 3).xyz - a,
+        facePlane(cell, (entryFace + 3) & 3).xyz - a);
+      n = dot(n, direction) > 0.0 ? -n : n;
+      plane = vec4(n, dot(n, a));
+    }
+    t = max((plane.w - dot(plane.xyz, origin)) / min(dot(plane.xyz, direction), -1.0e-30), resume);
   }
-  float t =
-    max((plane.w - dot(plane.xyz, origin)) / min(dot(plane.xyz, direction), -1.0e-30), resume);
   int k = -1;
   int j = -1; // isovalue interval, set at the first cell
   vec4 color = vec4(0.0);

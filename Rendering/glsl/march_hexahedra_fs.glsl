@@ -198,14 +198,12 @@ void main()
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 before;
   float resume;
-  int code = enterPeel(pixel, before, resume); // 2 (FACES h + f) + t
-  if (code < 0)
+  int startCell;
+  int code = enterPeel(pixel, before, resume, startCell); // 2 (FACES h + f) + t
+  if (code < 0 && startCell < 0)
   {
     return;
   }
-  int cell = code / (2 * FACES);
-  int entryFace = (code - 2 * FACES * cell) / 2;
-  int entryHalf = code - 2 * FACES * cell - 2 * entryFace;
 
   vec2 ndc = 2.0 * texCoord - 1.0;
   vec3 origin, direction;
@@ -214,12 +212,21 @@ void main()
   // Opaque geometry stops the ray at its depth.
   float tStop = opaqueStop(opaqueDepth, pixel, ndc, origin, direction);
 
+  // Into the first cell: through a triangle of its entry face, or already in
+  // it at the near plane (t = 0) when the ray starts inside the mesh.
+  int cell = startCell < 0 ? code / (2 * FACES) : startCell;
   vec3 p[8];
   loadCorners(cell, p);
   int mask = texelFetch(hexNeighbors, NEIGHBOR_TEXELS * cell + 1).z;
-  ivec3 tri = faceTriangle(entryFace, entryHalf, mask);
-  vec3 n0 = cross(p[tri.y] - p[tri.x], p[tri.z] - p[tri.x]);
-  float t = max(dot(n0, p[tri.x] - origin) / min(dot(n0, direction), -1.0e-30), resume);
+  int entryFace = -1;
+  float t = resume;
+  if (startCell < 0)
+  {
+    entryFace = (code - 2 * FACES * cell) / 2;
+    ivec3 tri = faceTriangle(entryFace, code - 2 * FACES * cell - 2 * entryFace, mask);
+    vec3 n0 = cross(p[tri.y] - p[tri.x], p[tri.z] - p[tri.x]);
+    t = max(dot(n0, p[tri.x] - origin) / min(dot(n0, direction), -1.0e-30), resume);
+  }
 
   int k = -1;
   int j = -1; // isovalue interval, set at the first cell
