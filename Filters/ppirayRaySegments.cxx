@@ -259,5 +259,57 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
     }
   }
 }
+
+//------------------------------------------------------------------------------
+glm::dvec2 KeptRange(
+  const std::vector<glm::dvec4>& planes, const Vec3& origin, const Vec3& direction)
+{
+  glm::dvec2 range(0.0, std::numeric_limits<double>::infinity());
+  for (const glm::dvec4& plane : planes)
+  {
+    // n . (origin + t direction) + d = b + a t >= 0.
+    const double a = glm::dot(Vec3(plane), direction);
+    const double b = glm::dot(Vec3(plane), origin) + plane.w;
+    if (a > 0)
+    {
+      range.x = std::max(range.x, -b / a);
+    }
+    else if (a < 0)
+    {
+      range.y = std::min(range.y, -b / a);
+    }
+    else if (b < 0)
+    {
+      range.y = -1.0;
+    }
+  }
+  return range;
+}
+
+//------------------------------------------------------------------------------
+void ClipSegments(std::vector<Segment>& segments, const glm::dvec2& range)
+{
+  if (range.x <= 0 && std::isinf(range.y))
+  {
+    return;
+  }
+  size_t kept = 0;
+  for (Segment seg : segments)
+  {
+    const double t0 = std::max(seg.T0, range.x), t1 = std::min(seg.T1, range.y);
+    if (!(t1 > t0))
+    {
+      continue;
+    }
+    const double slope = seg.T1 > seg.T0 ? (seg.S1 - seg.S0) / (seg.T1 - seg.T0) : 0.0;
+    const double s0 = seg.S0 + slope * (t0 - seg.T0), s1 = seg.S0 + slope * (t1 - seg.T0);
+    seg.T0 = t0;
+    seg.T1 = t1;
+    seg.S0 = s0;
+    seg.S1 = s1;
+    segments[kept++] = seg;
+  }
+  segments.resize(kept);
+}
 }
 }

@@ -16,7 +16,9 @@
 #include "vtkType.h" // for vtkIdType
 
 #include <glm/mat3x3.hpp> // for glm::dmat3
+#include <glm/vec2.hpp>   // for glm::dvec2
 #include <glm/vec3.hpp>   // for glm::dvec3
+#include <glm/vec4.hpp>   // for glm::dvec4
 #include <vector>         // for std::vector
 
 class vtkCell;
@@ -75,6 +77,16 @@ constexpr int MaximumSplitDepth = 24;
 void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scalars,
   vtkIdType cellId, const Vec3& origin, const Vec3& direction, const Vec3& centre, double tolerance,
   std::vector<Segment>& out, long long& unresolved);
+
+/**
+ * The part [lo, hi] of the ray origin + t direction, t >= 0, that the planes
+ * (n, d) keep, n . x + d >= 0 each (lo > hi: none).
+ */
+glm::dvec2 KeptRange(
+  const std::vector<glm::dvec4>& planes, const Vec3& origin, const Vec3& direction);
+
+/** The segments cut to t in `range` (the scalar linear along each), empty ones removed. */
+void ClipSegments(std::vector<Segment>& segments, const glm::dvec2& range);
 }
 }
 

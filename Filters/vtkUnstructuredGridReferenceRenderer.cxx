@@ -24,6 +24,8 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -32,6 +34,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <glm/vec3.hpp>
 
 #include <algorithm>
@@ -46,6 +49,7 @@ vtkStandardNewMacro(vtkUnstructuredGridReferenceRenderer);
 vtkCxxSetObjectMacro(vtkUnstructuredGridReferenceRenderer, VolumeProperty, vtkVolumeProperty);
 vtkCxxSetObjectMacro(vtkUnstructuredGridReferenceRenderer, Camera, vtkCamera);
 vtkCxxSetObjectMacro(vtkUnstructuredGridReferenceRenderer, Lights, vtkLightCollection);
+vtkCxxSetObjectMacro(vtkUnstructuredGridReferenceRenderer, ClippingPlanes, vtkPlaneCollection);
 
 using namespace ppiray::reference;
 
@@ -63,6 +67,7 @@ vtkUnstructuredGridReferenceRenderer::~vtkUnstructuredGridReferenceRenderer()
   this->SetVolumeProperty(nullptr);
   this->SetCamera(nullptr);
   this->SetLights(nullptr);
+  this->SetClippingPlanes(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -76,6 +81,10 @@ vtkMTimeType vtkUnstructuredGridReferenceRenderer::GetMTime()
   if (this->Camera)
   {
     time = std::max(time, this->Camera->GetMTime());
+  }
+  if (this->ClippingPlanes)
+  {
+    time = std::max(time, this->ClippingPlanes->GetMTime());
   }
   return time;
 }
@@ -167,6 +176,16 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
   worldToClip->DeepCopy(this->Camera->GetCompositeProjectionTransformMatrix(
     static_cast<double>(width) / height, -1, 1));
   vtkMatrix4x4::Invert(worldToClip, clipToWorld);
+
+  // Clipping planes in the frame centred on the bounds: n . y + (d + n . centre) >= 0.
+  std::vector<glm::dvec4> clippingPlanes;
+  const int planes = this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0;
+  for (int i = 0; i < std::min(planes, 6); ++i)
+  {
+    vtkPlane* plane = this->ClippingPlanes->GetItem(i);
+    const Vec3 n = glm::make_vec3(plane->GetNormal()), o = glm::make_vec3(plane->GetOrigin());
+    clippingPlanes.emplace_back(n, glm::dot(n, centre - o));
+  }
 
   ScreenTiles tiles;
   tiles.Build(input, cells, worldToClip, width, height);
@@ -275,6 +294,7 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
           GeneralCellSegments(c, cell, scalars, cellScalars ? c : -1, origin, direction, centre,
             linearTolerance, segments, unresolved);
         }
+        ClipSegments(segments, KeptRange(clippingPlanes, origin, direction));
         IntegrateRay(segments, tf, iso, origin, direction, centre, gradientAt,
           out + 4 * (static_cast<size_t>(py) * width + px));
       }
@@ -306,6 +326,7 @@ void vtkUnstructuredGridReferenceRenderer::PrintSelf(ostream& os, vtkIndent inde
   os << indent << "BlendMode: " << this->BlendMode << "\n";
   os << indent << "EmbedIsoSurfaces: " << this->EmbedIsoSurfaces << "\n";
   os << indent << "Lights: " << this->Lights << "\n";
+  os << indent << "ClippingPlanes: " << this->ClippingPlanes << "\n";
   os << indent << "VolumeProperty: " << this->VolumeProperty << "\n";
   os << indent << "Camera: " << this->Camera << "\n";
 }

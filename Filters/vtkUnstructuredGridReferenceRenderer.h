@@ -59,6 +59,7 @@
 
 class vtkCamera;
 class vtkLightCollection;
+class vtkPlaneCollection;
 class vtkVolumeProperty;
 
 class PPIRAYFILTERS_EXPORT vtkUnstructuredGridReferenceRenderer : public vtkImageAlgorithm
@@ -130,6 +131,16 @@ public:
   vtkGetObjectMacro(Lights, vtkLightCollection);
   ///@}
 
+  ///@{
+  /**
+   * Clipping planes (world coordinates, at most 6 used, as the GPU mapper):
+   * each keeps the side its normal points to, n . (x - origin) >= 0; every
+   * ray piece is cut exactly where a plane crosses it.
+   */
+  virtual void SetClippingPlanes(vtkPlaneCollection*);
+  vtkGetObjectMacro(ClippingPlanes, vtkPlaneCollection);
+  ///@}
+
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -148,6 +159,7 @@ protected:
   int BlendMode = COMPOSITE_BLEND;
   vtkTypeBool EmbedIsoSurfaces = 0;
   vtkLightCollection* Lights = nullptr;
+  vtkPlaneCollection* ClippingPlanes = nullptr;
 
 private:
   vtkUnstructuredGridReferenceRenderer(const vtkUnstructuredGridReferenceRenderer&) = delete;

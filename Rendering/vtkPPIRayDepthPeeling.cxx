@@ -15,9 +15,13 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
+#include <string>
+
 #include "composite_fs.h"
 #include "entry_fs.h"
 #include "entry_vs.h"
+#include "ray_fs.h"
 #include "section_fs.h"
 #include "section_vs.h"
 
@@ -124,7 +128,9 @@ bool vtkPPIRayDepthPeeling::Prepare(vtkOpenGLRenderWindow* context, int width, i
   vtkOpenGLShaderCache* cache = context->GetShaderCache();
   if (!this->EntryProgram)
   {
-    this->EntryProgram = cache->ReadyShaderProgram(entry_vs, entry_fs, "");
+    std::string fragment = entry_fs;
+    vtkShaderProgram::Substitute(fragment, "//PPIRay::Ray::Impl", ray_fs);
+    this->EntryProgram = cache->ReadyShaderProgram(entry_vs, fragment.c_str(), "");
   }
   else
   {
@@ -263,7 +269,7 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
   int peel = 0;
   if (frame.Section && !frame.Section->empty() && this->EnterAtNearPlane(context, frame, reporter))
   {
-    this->March(context, march, marchInputs);
+    this->March(context, frame, march, marchInputs);
     ++peel;
   }
   bool entered = false;
@@ -274,7 +280,7 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
     {
       break;
     }
-    this->March(context, march, marchInputs);
+    this->March(context, frame, march, marchInputs);
   }
   cut = peel == frame.MaximumPeels && entered;
   fbo->RemoveDepthAttachment();
@@ -313,6 +319,9 @@ bool vtkPPIRayDepthPeeling::Enter(
   }
   entry->SetUniformMatrix4x4("localToClip", const_cast<float*>(frame.LocalToClip));
   entry->SetUniformi("firstLayer", firstLayer ? 1 : 0);
+  const float viewport[2] = { static_cast<float>(frame.Width), static_cast<float>(frame.Height) };
+  entry->SetUniform2f("viewportSize", viewport);
+  SetRayUniforms(entry, frame);
   entry->SetUniformf("terminationAlpha", frame.TerminationAlpha);
   this->EntryVAO->Bind();
   cells.GetBoundaryTriangles()->Bind();
@@ -370,8 +379,8 @@ bool vtkPPIRayDepthPeeling::EnterAtNearPlane(
 }
 
 //------------------------------------------------------------------------------
-void vtkPPIRayDepthPeeling::March(
-  vtkOpenGLRenderWindow* context, vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs)
+void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& frame,
+  vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs)
 {
   // From the entry cell to where the ray leaves the mesh, composited under
   // what earlier peels accumulated (ping-pong).
@@ -395,6 +404,7 @@ void vtkPPIRayDepthPeeling::March(
     textures[i]->Activate();
     program->SetUniformi(names[i], textures[i]->GetTextureUnit());
   }
+  SetRayUniforms(program, frame);
   marchInputs(program, textures);
   march.Render();
   for (auto* texture : textures)
@@ -404,6 +414,21 @@ void vtkPPIRayDepthPeeling::March(
   fbo->RemoveColorAttachment(1);
   this->Current = next;
   this->Layer = 1 - this->Layer;
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayDepthPeeling::SetRayUniforms(vtkShaderProgram* program, const Frame& frame)
+{
+  program->SetUniformMatrix4x4("clipToLocal", const_cast<float*>(frame.ClipToLocal));
+  float planes[6][4] = {};
+  const size_t count =
+    frame.ClippingPlanes ? std::min<size_t>(frame.ClippingPlanes->size() / 4, 6) : 0;
+  for (size_t i = 0; i < 4 * count; ++i)
+  {
+    planes[i / 4][i % 4] = (*frame.ClippingPlanes)[i];
+  }
+  program->SetUniformi("numberOfClippingPlanes", static_cast<int>(count));
+  program->SetUniform4fv("clippingPlanes", 6, planes);
 }
 
 //------------------------------------------------------------------------------

@@ -11,7 +11,8 @@
  * front-facing boundary triangles (entry_vs.glsl, entry_fs.glsl) and the
  * march pass integrates from there (a full-screen quad of the march program,
  * its cell and transfer-function inputs bound by the caller), composited
- * under the earlier peels in ping-pong targets, until no fragment enters; the
+ * under the earlier peels in ping-pong targets, until no fragment enters (an
+ * entry past where opaque geometry or a clipping plane ends the ray is none); the
  * result is composited over VTK's framebuffer (composite_fs.glsl). GL state
  * is restored by vtkPPIRayPeelingStateRAII. Internal to PPIRay::Rendering.
  */
@@ -45,11 +46,15 @@ public:
   {
     int X0, Y0, Width, Height; // the renderer's tiled viewport
     float LocalToClip[16];     // column-major: the mesh's local frame to clip space
+    float ClipToLocal[16];     // and back
     float TerminationAlpha;    // a pixel this opaque takes no more peels
     int MaximumPeels;
     // The sections of the cells the near plane cuts (PlaneSection(): x, y,
     // z, cell per vertex), or null: the first march starts there.
     const std::vector<float>* Section = nullptr;
+    // Clipping planes in the local frame, (n, d) each, n . x + d >= 0 kept
+    // (at most 6), or null.
+    const std::vector<float>* ClippingPlanes = nullptr;
   };
   /** Binds the march program's inputs other than the peeling's own. */
   using MarchInputs = std::function<void(vtkShaderProgram*, std::vector<vtkTextureObject*>&)>;
@@ -81,9 +86,11 @@ private:
     bool firstLayer);
   // The sections of the cells cut by the near plane into EntryTexture.
   bool EnterAtNearPlane(vtkOpenGLRenderWindow* context, const Frame& frame, vtkObject* reporter);
-  void March(
-    vtkOpenGLRenderWindow* context, vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs);
+  void March(vtkOpenGLRenderWindow* context, const Frame& frame, vtkOpenGLQuadHelper& march,
+    const MarchInputs& marchInputs);
   void Composite(vtkOpenGLRenderWindow* context, const Frame& frame);
+  // The viewing ray's uniforms (ray_fs.glsl): clipToLocal, the clipping planes.
+  static void SetRayUniforms(vtkShaderProgram* program, const Frame& frame);
 
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   vtkNew<vtkTextureObject> EntryTexture;

@@ -16,6 +16,8 @@
 #include "vtkPPIRaySegmentIntegrator.h"
 #include "vtkPPIRayTetrahedralCellBuffers.h"
 #include "vtkPPIRayTransferFunctionTexture.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPoints.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -59,7 +61,9 @@ public:
   vtkPPIRayIsoSurfaceUniforms IsoSurfaces;
   vtkPPIRayMarchShader MarchShader;
   vtkPPIRayDepthPeeling Peeling;
-  std::vector<float> Section; // this frame's near-plane sections
+  int ClippingPlanesWarned = 0;      // the count of planes last warned about
+  std::vector<float> Section;        // this frame's near-plane sections
+  std::vector<float> ClippingPlanes; // this frame's clipping planes, local frame
 
   void ReleaseGraphicsResources(vtkWindow* window)
   {
@@ -343,6 +347,38 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateIntegrator(vtkOpenGLRenderWindow
 }
 
 //------------------------------------------------------------------------------
+void vtkUnstructuredGridGPURayCastMapper::ClippingPlanesInLocalFrame(
+  vtkMatrix4x4* localToWorld, std::vector<float>& planes)
+{
+  // A vtkPlane (origin o, normal n) keeps n . (x - o) >= 0 in world
+  // coordinates: p = (n, -n . o); with x = L y (L: local to world) that is
+  // (L^T p) . y >= 0 in the local frame.
+  planes.clear();
+  const int count = this->ClippingPlanes ? this->ClippingPlanes->GetNumberOfItems() : 0;
+  if (count > 6 && count != this->Internals->ClippingPlanesWarned)
+  {
+    vtkWarningMacro(<< count << " clipping planes; only the first 6 clip the volume.");
+  }
+  this->Internals->ClippingPlanesWarned = count > 6 ? count : 0;
+  for (int i = 0; i < std::min(count, 6); ++i)
+  {
+    vtkPlane* plane = this->ClippingPlanes->GetItem(i);
+    const double* n = plane->GetNormal();
+    const double* o = plane->GetOrigin();
+    const double world[4] = { n[0], n[1], n[2], -(n[0] * o[0] + n[1] * o[1] + n[2] * o[2]) };
+    for (int c = 0; c < 4; ++c)
+    {
+      double local = 0.0;
+      for (int r = 0; r < 4; ++r)
+      {
+        local += world[r] * localToWorld->GetElement(r, c);
+      }
+      planes.push_back(static_cast<float>(local));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   this->NumberOfPeels = 0;
@@ -403,9 +439,8 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
                               ren->GetTiledAspectRatio(), -1, 1),
     localToWorld, localToClip);
   vtkMatrix4x4::Invert(localToClip, clipToLocal);
-  float clipToLocalF[16];
   ColumnMajor(localToClip, frame.LocalToClip);
-  ColumnMajor(clipToLocal, clipToLocalF);
+  ColumnMajor(clipToLocal, frame.ClipToLocal);
   frame.TerminationAlpha = static_cast<float>(this->TerminationOpacity);
   frame.MaximumPeels = this->MaximumNumberOfPeels;
   // A camera inside the mesh: rays start at the near plane in the cells it
@@ -417,6 +452,8 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
     in.Cells->PlaneSection(nearPlane, in.Section);
   }
   frame.Section = &in.Section;
+  this->ClippingPlanesInLocalFrame(localToWorld, in.ClippingPlanes);
+  frame.ClippingPlanes = &in.ClippingPlanes;
   const double cells = static_cast<double>(in.Cells->GetNumberOfCells());
   const int maximumSteps =
     this->MaximumNumberOfSteps > 0
@@ -430,7 +467,6 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
     in.Cells->Bind(program, textures);
     in.TransferFunction.Bind(program, textures);
     in.Integrator->Bind(program, textures);
-    program->SetUniformMatrix4x4("clipToLocal", clipToLocalF);
     program->SetUniformi("maximumSteps", maximumSteps);
     program->SetUniformf("terminationAlpha", frame.TerminationAlpha);
     if (isoMode != ppiray::NoIsoSurfaces)

@@ -18,7 +18,10 @@
  * Transfer functions are rendered as VTK's volume mappers evaluate them
  * (vtkTransferFunctionControlPoints); infinite scalars or coordinates are
  * rejected with an error.
- * Opaque geometry already in the depth buffer stops the rays.
+ * Opaque geometry already in the depth buffer stops the rays. A camera
+ * inside the mesh: rays start at the near plane in the cell they are in.
+ * Clipping planes (vtkAbstractMapper::AddClippingPlane, at most 6; each keeps
+ * the side its normal points to) cut every ray piece exactly.
  *
  * Caches, each rebuilt for one reason (counted, see Get*UploadCount()):
  * geometry (planes, neighbours, boundary) when points or cells change; the
@@ -39,7 +42,9 @@
 #include "vtkUnstructuredGridVolumeMapper.h"
 
 #include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
 
+class vtkMatrix4x4;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkUnstructuredGridBase;
@@ -302,6 +307,8 @@ protected:
   bool UpdateCells(vtkUnstructuredGridBase* input, vtkOpenGLRenderWindow* context);
   bool UpdateField(vtkUnstructuredGridBase* input);
   bool UpdateIntegrator(vtkOpenGLRenderWindow* context);
+  // The clipping planes (at most 6) in the cells' local frame, 4 floats each.
+  void ClippingPlanesInLocalFrame(vtkMatrix4x4* localToWorld, std::vector<float>& planes);
 
 private:
   vtkUnstructuredGridGPURayCastMapper(const vtkUnstructuredGridGPURayCastMapper&) = delete;

@@ -12,12 +12,19 @@
 // split along different diagonals) cross each other. The march starts such a
 // layer at the previous exit (march_common_fs.glsl, enterPeel), so nothing is
 // integrated twice and nothing behind the exit is dropped.
+//
+// Like opaque geometry, a clipping plane that closes the ray ends its peels:
+// an entry past the kept part of the ray is no entry.
 
 uniform sampler2D previousLayerDepth; // depth of layer k-1 (unused for k = 0)
 uniform sampler2D opaqueDepth;        // VTK's depth buffer: opaque geometry
 uniform sampler2D accumulated;        // colour composited so far
 uniform int firstLayer;
 uniform float terminationAlpha;
+uniform vec2 viewportSize;
+in vec3 localPosition;
+
+//PPIRay::Ray::Impl
 
 out vec4 fragOutput0; // r: boundary triangle id + 1 (0: no entry)
 
@@ -33,6 +40,15 @@ void main()
   if (firstLayer == 0 && depth <= texelFetch(previousLayerDepth, pixel, 0).r)
   {
     discard;
+  }
+  if (numberOfClippingPlanes > 0)
+  {
+    vec3 origin, direction;
+    pixelRay(2.0 * gl_FragCoord.xy / viewportSize - 1.0, origin, direction);
+    if (dot(localPosition - origin, direction) > keptRange(origin, direction).y)
+    {
+      discard;
+    }
   }
   fragOutput0 = vec4(float(gl_PrimitiveID + 1), 0.0, 0.0, 1.0);
 }

@@ -4,8 +4,10 @@
 
 in vec3 vertexMC;
 uniform mat4 localToClip;
+out vec3 localPosition;
 
 void main()
 {
   gl_Position = localToClip * vec4(vertexMC, 1.0);
+  localPosition = vertexMC;
 }

@@ -151,8 +151,11 @@ void main()
   vec3 origin, direction;
   pixelRay(ndc, origin, direction);
 
-  // Opaque geometry stops the ray at its depth.
-  float tStop = opaqueStop(opaqueDepth, pixel, ndc, origin, direction);
+  // Opaque geometry stops the ray at its depth; clipping planes keep
+  // [tKept, tStop] of it.
+  vec2 kept = keptRange(origin, direction);
+  float tKept = kept.x;
+  float tStop = min(opaqueStop(opaqueDepth, pixel, ndc, origin, direction), kept.y);
 
   // Into the first cell: through its entry face, or already in it at the
   // near plane (t = 0) when the ray starts inside the mesh.
@@ -215,13 +218,14 @@ void main()
       {
         tExit = max(tExit, t);
         float tEnd = min(tExit, tStop);
+        float tFrom = max(t, tKept);
         vec4 g = texelFetch(field, FIELD_TEXELS * cell);
-        if (g.w > EMPTY_CELL && tEnd > t)
+        if (g.w > EMPTY_CELL && tEnd > tFrom)
         {
-          float sFront = dot(g.xyz, origin + t * direction) + g.w;
+          float sFront = dot(g.xyz, origin + tFrom * direction) + g.w;
           float sBack = dot(g.xyz, origin + tEnd * direction) + g.w;
-          k = integrateTetrahedronSegment(sFront, sBack, tEnd - t, g.xyz, origin + t * direction,
-            direction, k, j, color);
+          k = integrateTetrahedronSegment(sFront, sBack, tEnd - tFrom, g.xyz,
+            origin + tFrom * direction, direction, k, j, color);
         }
         reached = max(reached, tEnd);
         if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)

@@ -209,8 +209,11 @@ void main()
   vec3 origin, direction;
   pixelRay(ndc, origin, direction);
 
-  // Opaque geometry stops the ray at its depth.
-  float tStop = opaqueStop(opaqueDepth, pixel, ndc, origin, direction);
+  // Opaque geometry stops the ray at its depth; clipping planes keep
+  // [tKept, tStop] of it.
+  vec2 kept = keptRange(origin, direction);
+  float tKept = kept.x;
+  float tStop = min(opaqueStop(opaqueDepth, pixel, ndc, origin, direction), kept.y);
 
   // Into the first cell: through a triangle of its entry face, or already in
   // it at the near plane (t = 0) when the ray starts inside the mesh.
@@ -305,8 +308,9 @@ void main()
       tExit = max(tExit, t);
       float tEnd = min(tExit, tStop);
       reached = tEnd;
+      float tFrom = max(t, tKept);
       vec4 c0 = texelFetch(hexCoefficients, FIELD_TEXELS * cell);
-      if (c0.x > EMPTY_CELL && tEnd > t)
+      if (c0.x > EMPTY_CELL && tEnd > tFrom)
       {
         mat3 frame = mat3(p[1] - p[0], p[3] - p[0], p[4] - p[0]);
         float det = determinant(frame);
@@ -314,13 +318,13 @@ void main()
         if (abs(det) > 1.0e-6 * scale)
         {
           mat3 toFrame = inverse(frame);
-          vec3 entry = origin + t * direction;
+          vec3 entry = origin + tFrom * direction;
           vec3 q = toFrame * (entry - p[0]);
           vec3 r = toFrame * direction;
           vec4 c1 = texelFetch(hexCoefficients, FIELD_TEXELS * cell + 1);
           vec4 w = rayCubic(c0, c1, q, r);
-          k = integrateHexahedronSegment(w, tEnd - t, c0, c1, q, r, toFrame, entry, direction, k,
-            j, color);
+          k = integrateHexahedronSegment(
+            w, tEnd - tFrom, c0, c1, q, r, toFrame, entry, direction, k, j, color);
         }
       }
       if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)

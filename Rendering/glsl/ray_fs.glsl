@@ -23,3 +23,35 @@ float opaqueStop(sampler2D depth, ivec2 pixel, vec2 ndc, vec3 origin, vec3 direc
   vec4 hit = clipToLocal * vec4(ndc, 2.0 * z - 1.0, 1.0);
   return dot(hit.xyz / hit.w - origin, direction);
 }
+
+// Clipping planes (vtkAbstractMapper's, at most 6) in the local frame: the
+// side n . x + d >= 0 of each is kept, as VTK's mappers keep the side a
+// vtkPlane's normal points to.
+uniform int numberOfClippingPlanes;
+uniform vec4 clippingPlanes[6];
+
+// The part [lo, hi] of the ray origin + t direction, t >= 0, that every
+// clipping plane keeps (lo > hi: none): on plane i, n . (origin + t direction)
+// + d = b + a t >= 0 bounds t from below where a > 0, from above where a < 0.
+vec2 keptRange(vec3 origin, vec3 direction)
+{
+  vec2 range = vec2(0.0, 3.0e38);
+  for (int i = 0; i < min(numberOfClippingPlanes, 6); ++i)
+  {
+    float a = dot(clippingPlanes[i].xyz, direction);
+    float b = dot(clippingPlanes[i].xyz, origin) + clippingPlanes[i].w;
+    if (a > 0.0)
+    {
+      range.x = max(range.x, -b / a);
+    }
+    else if (a < 0.0)
+    {
+      range.y = min(range.y, -b / a);
+    }
+    else if (b < 0.0)
+    {
+      range.y = -1.0; // along a plane, on its clipped side
+    }
+  }
+  return range;
+}

@@ -11,6 +11,7 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkUnstructuredGrid.h"
@@ -34,16 +35,17 @@ struct PixelCheck
 
 // `image` is the window's RGB over a black background: the premultiplied
 // colour. `cellArray` names the cell scalars to render, else the active point
-// scalars are used.
+// scalars are used; `clippingPlanes` clip the reference's rays.
 inline PixelCheck CheckPixels(vtkRenderer* ren, vtkUnstructuredGrid* grid,
   vtkVolumeProperty* property, const std::vector<unsigned char>& image, int w, int h,
-  const char* cellArray = nullptr)
+  const char* cellArray = nullptr, vtkPlaneCollection* clippingPlanes = nullptr)
 {
   vtkNew<vtkUnstructuredGridReferenceRenderer> reference;
   reference->SetInputData(grid);
   reference->SetVolumeProperty(property);
   reference->SetCamera(ren->GetActiveCamera());
   reference->SetImageSize(w, h);
+  reference->SetClippingPlanes(clippingPlanes);
   if (cellArray)
   {
     reference->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, cellArray);

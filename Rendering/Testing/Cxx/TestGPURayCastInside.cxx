@@ -46,8 +46,7 @@ int TestGPURayCastInside(int argc, char* argv[])
   const int n[3] = { 8, 8, 8 };
   const double origin[3] = { 0, 0, 0 };
   auto keep = [](int, int j, int k) { return !(j >= 5 && j < 7 && k >= 3 && k < 5); };
-  auto field = [](double x, double y, double z)
-  { return 0.3 + 0.7 * ppiray_test::Blob(x, y, z); };
+  auto field = [](double x, double y, double z) { return 0.3 + 0.7 * ppiray_test::Blob(x, y, z); };
   auto tetrahedra = ppiray_test::VoxelTetrahedra(n, 1.0 / 8, origin, keep, field);
   // The same block as hexahedra: the voxels' six tetrahedra share their
   // corners, so each voxel is a hexahedron of the tetrahedra's points.
@@ -85,15 +84,12 @@ int TestGPURayCastInside(int argc, char* argv[])
     { "TetrahedraPerspective", false, false, { 0.43, 0.2, 0.47 }, { 0.5, 1.0, 0.55 }, 0.01 },
     { "TetrahedraParallel", false, true, { 0.43, 0.2, 0.47 }, { 0.5, 1.0, 0.55 }, 0.01 },
     // The near plane on the faces y = 2/8 (eye at y = 0.2, near 0.05).
-    { "TetrahedraNearPlaneOnFaces", false, false, { 0.45, 0.2, 0.52 }, { 0.45, 1.0, 0.52 },
-      0.05 },
+    { "TetrahedraNearPlaneOnFaces", false, false, { 0.45, 0.2, 0.52 }, { 0.45, 1.0, 0.52 }, 0.05 },
     // The eye 1e-4 from the vertex (3/8, 2/8, 4/8), the near plane 1e-3 away.
-    { "TetrahedraNearVertex", false, false, { 0.3751, 0.2501, 0.5001 }, { 0.9, 0.9, 0.7 },
-      0.001 },
+    { "TetrahedraNearVertex", false, false, { 0.3751, 0.2501, 0.5001 }, { 0.9, 0.9, 0.7 }, 0.001 },
     { "HexahedraPerspective", true, false, { 0.43, 0.2, 0.47 }, { 0.5, 1.0, 0.55 }, 0.01 },
     { "HexahedraParallel", true, true, { 0.43, 0.2, 0.47 }, { 0.5, 1.0, 0.55 }, 0.01 },
-    { "HexahedraNearPlaneOnFaces", true, false, { 0.45, 0.2, 0.52 }, { 0.45, 1.0, 0.52 },
-      0.05 },
+    { "HexahedraNearPlaneOnFaces", true, false, { 0.45, 0.2, 0.52 }, { 0.45, 1.0, 0.52 }, 0.05 },
   };
   int errors = 0;
   for (const InsideScene& inside : scenes)
@@ -125,9 +121,9 @@ int TestGPURayCastInside(int argc, char* argv[])
     const auto check =
       ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property, image, Size, Size);
     std::cout << inside.Name << ": " << grid->GetNumberOfCells() << " cells, "
-              << mapper->GetNumberOfPeels() << " peels, " << check.Pixels
-              << " pixels covered, p99 " << check.P99 << " max " << check.MaxDifference
-              << " /255; messages [" << messages->Warnings << messages->Errors << "]\n";
+              << mapper->GetNumberOfPeels() << " peels, " << check.Pixels << " pixels covered, p99 "
+              << check.P99 << " max " << check.MaxDifference << " /255; messages ["
+              << messages->Warnings << messages->Errors << "]\n";
     if (check.P99 > 1.0 || check.MaxDifference > 1.0)
     {
       std::cout << "FAILED: " << inside.Name << " differs from the reference\n";
