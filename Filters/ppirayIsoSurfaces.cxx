@@ -20,6 +20,8 @@ IsoSurfaceMode ChooseIsoSurfaceMode(
   int blendMode, bool embed, int numberOfValues, std::string& warning)
 {
   constexpr int compositeBlend = 0;  // vtkVolumeMapper::COMPOSITE_BLEND
+  constexpr int maximumBlend = 1;    // vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND
+  constexpr int minimumBlend = 2;    // vtkVolumeMapper::MINIMUM_INTENSITY_BLEND
   constexpr int isoSurfaceBlend = 5; // vtkVolumeMapper::ISOSURFACE_BLEND
   warning.clear();
   if (blendMode == isoSurfaceBlend)
@@ -31,10 +33,15 @@ IsoSurfaceMode ChooseIsoSurfaceMode(
     }
     return IsoSurfacesOnly;
   }
+  if (blendMode == maximumBlend || blendMode == minimumBlend)
+  {
+    return NoIsoSurfaces; // projections draw no surfaces
+  }
   if (blendMode != compositeBlend)
   {
     warning = "Blend mode " + std::to_string(blendMode) +
-              " is not supported (composite and isosurface only); rendering composite.";
+              " is not supported (composite, maximum and minimum intensity, isosurface); rendering "
+              "composite.";
     return NoIsoSurfaces;
   }
   return embed && numberOfValues > 0 ? EmbeddedIsoSurfaces : NoIsoSurfaces;

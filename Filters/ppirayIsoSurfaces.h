@@ -37,11 +37,12 @@ enum IsoSurfaceMode
 };
 
 /**
- * The mode of a blend mode (VTK's COMPOSITE_BLEND 0, ISOSURFACE_BLEND 5),
- * EmbedIsoSurfaces and the number of isovalues: isosurfaces only in
- * ISOSURFACE_BLEND (nothing drawn without isovalues), embedded in composite
- * when asked for and there are values, else none. `warning` says what is not
- * drawn as asked ("" when all is).
+ * The mode of a blend mode (VTK's COMPOSITE_BLEND 0, MAXIMUM_ and
+ * MINIMUM_INTENSITY_BLEND 1 and 2, ISOSURFACE_BLEND 5), EmbedIsoSurfaces and
+ * the number of isovalues: isosurfaces only in ISOSURFACE_BLEND (nothing
+ * drawn without isovalues), embedded in composite when asked for and there
+ * are values, else none. `warning` says what is not drawn as asked ("" when
+ * all is; other blend modes render composite).
  */
 PPIRAYFILTERS_EXPORT IsoSurfaceMode ChooseIsoSurfaceMode(
   int blendMode, bool embed, int numberOfValues, std::string& warning);

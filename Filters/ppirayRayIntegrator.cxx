@@ -121,5 +121,32 @@ void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf,
   }
   rgba[3] = static_cast<float>(1.0 - transmittance);
 }
+
+//------------------------------------------------------------------------------
+void ProjectRay(
+  const std::vector<Segment>& segments, const TransferFunction& tf, bool maximum, float rgba[4])
+{
+  std::fill(rgba, rgba + 4, 0.0f);
+  if (segments.empty())
+  {
+    return;
+  }
+  double extreme = segments.front().S0;
+  for (const Segment& seg : segments)
+  {
+    for (double s : { seg.S0, seg.S1 })
+    {
+      extreme = maximum ? std::max(extreme, s) : std::min(extreme, s);
+    }
+  }
+  double rgb[3], tau;
+  tf.Evaluate(extreme, tf.Piece(extreme), rgb, tau);
+  const double alpha = std::min(1.0, std::max(0.0, tau * tf.UnitDistance));
+  for (int c = 0; c < 3; ++c)
+  {
+    rgba[c] = static_cast<float>(alpha * rgb[c]);
+  }
+  rgba[3] = static_cast<float>(alpha);
+}
 }
 }

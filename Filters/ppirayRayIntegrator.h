@@ -31,6 +31,15 @@ using GradientAt = std::function<Vec3(vtkIdType cell, double t)>;
 void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf,
   const IsoSurfaces& iso, const Vec3& origin, const Vec3& direction, const Vec3& centre,
   const GradientAt& gradientAt, float rgba[4]);
+
+/**
+ * Maximum (`maximum` true) or minimum intensity projection of the segments:
+ * the extreme of their end values (the scalar is linear on each), coloured
+ * by the transfer function there with alpha = its scalar opacity
+ * (tau x unit distance), premultiplied; zero when there is no segment.
+ */
+void ProjectRay(
+  const std::vector<Segment>& segments, const TransferFunction& tf, bool maximum, float rgba[4]);
 }
 }
 

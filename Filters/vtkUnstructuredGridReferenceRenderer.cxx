@@ -187,6 +187,8 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
     clippingPlanes.emplace_back(n, glm::dot(n, centre - o));
   }
 
+  const bool projection =
+    this->BlendMode == MAXIMUM_INTENSITY_BLEND || this->BlendMode == MINIMUM_INTENSITY_BLEND;
   ScreenTiles tiles;
   tiles.Build(input, cells, worldToClip, width, height);
   const int tilesX = tiles.TilesX, TileSize = ScreenTiles::Size;
@@ -295,8 +297,15 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
             linearTolerance, segments, unresolved);
         }
         ClipSegments(segments, KeptRange(clippingPlanes, origin, direction));
-        IntegrateRay(segments, tf, iso, origin, direction, centre, gradientAt,
-          out + 4 * (static_cast<size_t>(py) * width + px));
+        float* pixel = out + 4 * (static_cast<size_t>(py) * width + px);
+        if (projection)
+        {
+          ProjectRay(segments, tf, this->BlendMode == MAXIMUM_INTENSITY_BLEND, pixel);
+        }
+        else
+        {
+          IntegrateRay(segments, tf, iso, origin, direction, centre, gradientAt, pixel);
+        }
       }
     }
     unresolvedPieces += unresolved;

@@ -107,16 +107,22 @@ public:
 
   /**
    * Blend modes, with vtkVolumeMapper's names and values: composite
-   * (default) or isosurfaces only.
+   * (default), maximum or minimum intensity projection (the extreme scalar
+   * along the ray with the transfer function's colour and scalar opacity
+   * there, premultiplied), or isosurfaces only.
    */
   enum
   {
     COMPOSITE_BLEND = 0,
+    MAXIMUM_INTENSITY_BLEND = 1,
+    MINIMUM_INTENSITY_BLEND = 2,
     ISOSURFACE_BLEND = 5
   };
   vtkSetMacro(BlendMode, int);
   vtkGetMacro(BlendMode, int);
   void SetBlendModeToIsoSurface() { this->SetBlendMode(ISOSURFACE_BLEND); }
+  void SetBlendModeToMaximumIntensity() { this->SetBlendMode(MAXIMUM_INTENSITY_BLEND); }
+  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
 
   ///@{
   /** In composite mode, also draw the isosurfaces embedded in the volume (default off). */

@@ -60,9 +60,10 @@ vtkPPIRayDepthPeeling::~vtkPPIRayDepthPeeling() = default;
 //------------------------------------------------------------------------------
 size_t vtkPPIRayDepthPeeling::GetGPUBytes() const
 {
-  // entry id (R32F), 2 accumulated (RGBA32F), 2 exit (R32F), 3 depth (32F).
+  // entry id (R32F), 2 accumulated (RGBA32F), 2 exit and projection state
+  // (RGBA32F), 3 depth (32F).
   return static_cast<size_t>(this->TargetSize[0]) * this->TargetSize[1] *
-         (4 + 2 * 16 + 2 * 4 + 3 * 4);
+         (4 + 2 * 16 + 2 * 16 + 3 * 4);
 }
 
 //------------------------------------------------------------------------------
@@ -106,8 +107,8 @@ bool vtkPPIRayDepthPeeling::Prepare(vtkOpenGLRenderWindow* context, int width, i
     const bool ok = AllocateTarget(this->EntryTexture, context, width, height, 1) &&
                     AllocateTarget(this->Accumulated[0], context, width, height, 4) &&
                     AllocateTarget(this->Accumulated[1], context, width, height, 4) &&
-                    AllocateTarget(this->Exit[0], context, width, height, 1) &&
-                    AllocateTarget(this->Exit[1], context, width, height, 1) &&
+                    AllocateTarget(this->Exit[0], context, width, height, 4) &&
+                    AllocateTarget(this->Exit[1], context, width, height, 4) &&
                     AllocateDepthTarget(this->LayerDepth[0], context, width, height) &&
                     AllocateDepthTarget(this->LayerDepth[1], context, width, height);
     if (!ok)

@@ -95,7 +95,7 @@ private:
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   vtkNew<vtkTextureObject> EntryTexture;
   vtkNew<vtkTextureObject> Accumulated[2]; // ping-pong: colour so far
-  vtkNew<vtkTextureObject> Exit[2];        // ping-pong: where the last march stopped
+  vtkNew<vtkTextureObject> Exit[2];        // ping-pong: where the last march stopped, projection
   vtkNew<vtkTextureObject> LayerDepth[2];
   vtkNew<vtkTextureObject> OpaqueDepth; // same format as VTK's depth buffer
   int OpaqueDepthFormat = -2;

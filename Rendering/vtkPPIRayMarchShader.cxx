@@ -8,6 +8,7 @@
 #include "vtkShaderProgram.h"
 
 #include "isosurface_fs.h"
+#include "projection_fs.h"
 #include "ray_fs.h"
 #include "transfer_function_fs.h"
 
@@ -18,13 +19,16 @@ vtkPPIRayMarchShader::vtkPPIRayMarchShader() = default;
 vtkPPIRayMarchShader::~vtkPPIRayMarchShader() = default;
 
 //------------------------------------------------------------------------------
-std::string vtkPPIRayMarchShader::Compose(
-  const std::string& traversal, const std::string& integration, const std::string& isoSurfaces)
+std::string vtkPPIRayMarchShader::Compose(const std::string& traversal,
+  const std::string& integration, const std::string& isoSurfaces, int blend)
 {
   std::string march = traversal;
   vtkShaderProgram::Substitute(march, "//PPIRay::TransferFunction::Impl", transfer_function_fs);
   vtkShaderProgram::Substitute(march, "//PPIRay::IsoSurface::Impl", isosurface_fs);
   vtkShaderProgram::Substitute(march, "//PPIRay::IsoSurface::Dec", isoSurfaces);
+  vtkShaderProgram::Substitute(march, "//PPIRay::Projection::Impl", projection_fs);
+  vtkShaderProgram::Substitute(
+    march, "//PPIRay::Blend::Dec", "const int BLEND = " + std::to_string(blend) + ";");
   vtkShaderProgram::Substitute(march, "//PPIRay::Integrate::Impl", integration);
   vtkShaderProgram::Substitute(march, "//PPIRay::Ray::Impl", ray_fs);
   return march;
@@ -33,9 +37,9 @@ std::string vtkPPIRayMarchShader::Compose(
 //------------------------------------------------------------------------------
 vtkOpenGLQuadHelper* vtkPPIRayMarchShader::Ready(vtkOpenGLRenderWindow* context,
   const std::string& traversal, const std::string& integration, const std::string& isoSurfaces,
-  vtkObject* reporter)
+  int blend, vtkObject* reporter)
 {
-  std::string source = Compose(traversal, integration, isoSurfaces);
+  std::string source = Compose(traversal, integration, isoSurfaces, blend);
   if (this->Quad && source == this->Source && !this->Quad->Program)
   {
     return nullptr; // reported when it was built

@@ -5,6 +5,7 @@
  * As VTK's vtkVolumeShaderComposer: the march pass's fragment shader is the
  * traversal of the cells (vtkPPIRayCellBuffers::GetMarchShader(), with its
  * layout), with the transfer function lookup, the isosurfaces, the
+ * projections (BLEND: 0 composite, 1 maximum, 2 minimum intensity), the
  * integration mode's segment integral (vtkPPIRaySegmentIntegrator) and the
  * viewing ray substituted at their //PPIRay:: markers. The program is
  * rebuilt only when the composed source changes. Internal to
@@ -28,15 +29,15 @@ public:
   ~vtkPPIRayMarchShader();
 
   /** The fragment shader of `traversal` with the other parts substituted. */
-  static std::string Compose(
-    const std::string& traversal, const std::string& integration, const std::string& isoSurfaces);
+  static std::string Compose(const std::string& traversal, const std::string& integration,
+    const std::string& isoSurfaces, int blend);
 
   /**
    * The program of the composed shader, ready to use; null (reported) when
    * it does not build.
    */
   vtkOpenGLQuadHelper* Ready(vtkOpenGLRenderWindow* context, const std::string& traversal,
-    const std::string& integration, const std::string& isoSurfaces, vtkObject* reporter);
+    const std::string& integration, const std::string& isoSurfaces, int blend, vtkObject* reporter);
 
   void ReleaseGraphicsResources(vtkWindow* window);
 

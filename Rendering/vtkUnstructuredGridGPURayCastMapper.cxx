@@ -418,9 +418,13 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   {
     return;
   }
-  vtkOpenGLQuadHelper* march =
-    in.MarchShader.Ready(context, in.Cells->GetMarchShader(this->HexahedronMode),
-      in.Integrator->GetShaderCode(), vtkPPIRayIsoSurfaceUniforms::Declarations(isoMode), this);
+  // Maximum (1) and minimum (2) intensity projection, else composite (0).
+  const int projection = this->BlendMode == MAXIMUM_INTENSITY_BLEND
+                           ? 1
+                           : (this->BlendMode == MINIMUM_INTENSITY_BLEND ? 2 : 0);
+  vtkOpenGLQuadHelper* march = in.MarchShader.Ready(context,
+    in.Cells->GetMarchShader(this->HexahedronMode), in.Integrator->GetShaderCode(),
+    vtkPPIRayIsoSurfaceUniforms::Declarations(isoMode), projection, this);
   if (!march)
   {
     return;
@@ -441,7 +445,8 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   vtkMatrix4x4::Invert(localToClip, clipToLocal);
   ColumnMajor(localToClip, frame.LocalToClip);
   ColumnMajor(clipToLocal, frame.ClipToLocal);
-  frame.TerminationAlpha = static_cast<float>(this->TerminationOpacity);
+  // A projection's colour is that of its last extreme: no early stop.
+  frame.TerminationAlpha = projection ? 2.0f : static_cast<float>(this->TerminationOpacity);
   frame.MaximumPeels = this->MaximumNumberOfPeels;
   // A camera inside the mesh: rays start at the near plane in the cells it
   // cuts (none when it passes outside the mesh's bounding sphere).
@@ -469,6 +474,8 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
     in.Integrator->Bind(program, textures);
     program->SetUniformi("maximumSteps", maximumSteps);
     program->SetUniformf("terminationAlpha", frame.TerminationAlpha);
+    program->SetUniformf("opacityUnitDistance",
+      static_cast<float>(vol->GetProperty()->GetScalarOpacityUnitDistance(0)));
     if (isoMode != ppiray::NoIsoSurfaces)
     {
       in.IsoSurfaces.Bind(program, localToWorld, in.Field.GetShift());

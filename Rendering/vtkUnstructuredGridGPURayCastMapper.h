@@ -142,13 +142,20 @@ public:
    * isovalue as their opacity (1: opaque), lit with the renderer's lights and
    * the property's ambient, diffuse, specular and specular power when its
    * Shade is on (normal: the field gradient; trilinear in a hexahedron).
-   * MAXIMUM_INTENSITY_BLEND is not supported (composite with a warning).
+   * MAXIMUM_INTENSITY_BLEND (vtkUnstructuredGridVolumeMapper) and
+   * MINIMUM_INTENSITY_BLEND (vtkVolumeMapper's value): the largest or
+   * smallest scalar along the ray, exact per cell (at a segment's end, or at
+   * an extremum of the cubic in a hexahedron), with the transfer function's
+   * colour and scalar opacity there, as vtkGPUVolumeRayCastMapper colours
+   * it. Other blend modes render composite, with a warning.
    */
   enum
   {
+    MINIMUM_INTENSITY_BLEND = 2,
     ISOSURFACE_BLEND = 5
   };
   void SetBlendModeToIsoSurface() { this->SetBlendMode(ISOSURFACE_BLEND); }
+  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
 
   /**
    * What a frame draws of the isosurfaces (from the blend mode,

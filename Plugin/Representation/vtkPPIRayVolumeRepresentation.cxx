@@ -178,9 +178,11 @@ void vtkPPIRayVolumeRepresentation::SetTerminationOpacity(double opacity)
 void vtkPPIRayVolumeRepresentation::SetPPIRayBlendMode(int mode)
 {
   using Mapper = vtkUnstructuredGridGPURayCastMapper;
-  this->Mapper->SetBlendMode(mode == Mapper::ISOSURFACES_ONLY
-                               ? static_cast<int>(Mapper::ISOSURFACE_BLEND)
-                               : static_cast<int>(Mapper::COMPOSITE_BLEND));
+  const int blend = mode == Mapper::ISOSURFACES_ONLY ? static_cast<int>(Mapper::ISOSURFACE_BLEND)
+                    : mode == MaximumIntensity ? static_cast<int>(Mapper::MAXIMUM_INTENSITY_BLEND)
+                    : mode == MinimumIntensity ? static_cast<int>(Mapper::MINIMUM_INTENSITY_BLEND)
+                                               : static_cast<int>(Mapper::COMPOSITE_BLEND);
+  this->Mapper->SetBlendMode(blend);
   this->Mapper->SetEmbedIsoSurfaces(mode == Mapper::EMBEDDED_ISOSURFACES);
 }
 

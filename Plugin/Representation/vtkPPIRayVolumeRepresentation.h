@@ -56,7 +56,13 @@ public:
   void SetPreIntegrationTableSize(int size);
   void SetTerminationOpacity(double opacity);
   // The mapper's NO_ISOSURFACES (composite), EMBEDDED_ISOSURFACES (composite
-  // with the isosurfaces embedded) or ISOSURFACES_ONLY (ISOSURFACE_BLEND).
+  // with the isosurfaces embedded) or ISOSURFACES_ONLY (ISOSURFACE_BLEND), or
+  // MaximumIntensity, MinimumIntensity (the projections).
+  enum
+  {
+    MaximumIntensity = 3,
+    MinimumIntensity = 4
+  };
   void SetPPIRayBlendMode(int mode);
   // The isovalues, in the volume property (vtkImageVolumeRepresentation's
   // names, so that ParaView's isovalue widgets drive them the same way).

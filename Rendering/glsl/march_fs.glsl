@@ -35,6 +35,8 @@ uniform samplerBuffer field;
 
 //PPIRay::IsoSurface::Impl
 
+//PPIRay::Projection::Impl
+
 //PPIRay::Integrate::Impl
 
 // One cell's stretch of the ray, x in [0, len] past `entry`, on which s goes
@@ -151,6 +153,11 @@ void main()
   vec3 origin, direction;
   pixelRay(ndc, origin, direction);
 
+  // A projection's extreme so far (earlier peels).
+  float extreme;
+  bool met;
+  previousExtreme(pixel, extreme, met);
+
   // Opaque geometry stops the ray at its depth; clipping planes keep
   // [tKept, tStop] of it.
   vec2 kept = keptRange(origin, direction);
@@ -224,8 +231,16 @@ void main()
         {
           float sFront = dot(g.xyz, origin + tFrom * direction) + g.w;
           float sBack = dot(g.xyz, origin + tEnd * direction) + g.w;
-          k = integrateTetrahedronSegment(sFront, sBack, tEnd - tFrom, g.xyz,
-            origin + tFrom * direction, direction, k, j, color);
+          if (BLEND == 0)
+          {
+            k = integrateTetrahedronSegment(sFront, sBack, tEnd - tFrom, g.xyz,
+              origin + tFrom * direction, direction, k, j, color);
+          }
+          else
+          {
+            meetScalar(sFront, extreme, met);
+            meetScalar(sBack, extreme, met);
+          }
         }
         reached = max(reached, tEnd);
         if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
@@ -259,6 +274,5 @@ void main()
     cell = next / FACES;
     entryFace = next - FACES * cell;
   }
-  fragOutput0 = before + (1.0 - before.a) * color;
-  fragOutput1 = vec4(reached);
+  finishPeel(before, color, reached, extreme, met);
 }

@@ -40,6 +40,8 @@ const int FACE[24] =
 
 //PPIRay::IsoSurface::Impl
 
+//PPIRay::Projection::Impl
+
 //PPIRay::Integrate::Impl
 
 //PPIRay::Ray::Impl
@@ -209,6 +211,11 @@ void main()
   vec3 origin, direction;
   pixelRay(ndc, origin, direction);
 
+  // A projection's extreme so far (earlier peels).
+  float extreme;
+  bool met;
+  previousExtreme(pixel, extreme, met);
+
   // Opaque geometry stops the ray at its depth; clipping planes keep
   // [tKept, tStop] of it.
   vec2 kept = keptRange(origin, direction);
@@ -323,8 +330,23 @@ void main()
           vec3 r = toFrame * direction;
           vec4 c1 = texelFetch(hexCoefficients, FIELD_TEXELS * cell + 1);
           vec4 w = rayCubic(c0, c1, q, r);
-          k = integrateHexahedronSegment(
-            w, tEnd - tFrom, c0, c1, q, r, toFrame, entry, direction, k, j, color);
+          if (BLEND == 0)
+          {
+            k = integrateHexahedronSegment(
+              w, tEnd - tFrom, c0, c1, q, r, toFrame, entry, direction, k, j, color);
+          }
+          else
+          {
+            // The cubic's extremes: its ends and the roots of its derivative.
+            float roots[2];
+            int extrema = cubicExtrema(w, tEnd - tFrom, roots);
+            meetScalar(cubicValue(w, 0.0), extreme, met);
+            meetScalar(cubicValue(w, tEnd - tFrom), extreme, met);
+            for (int i = 0; i < extrema; ++i)
+            {
+              meetScalar(cubicValue(w, roots[i]), extreme, met);
+            }
+          }
         }
       }
       if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
@@ -371,6 +393,5 @@ void main()
     loadCorners(cell, p);
     mask = texelFetch(hexNeighbors, NEIGHBOR_TEXELS * cell + 1).z;
   }
-  fragOutput0 = before + (1.0 - before.a) * color;
-  fragOutput1 = vec4(reached);
+  finishPeel(before, color, reached, extreme, met);
 }

@@ -96,6 +96,13 @@ def main(plugin, xml_path):
         got = getattr(mapper, getter)()
         if abs(got - expected) > 1e-9:
             failures.append("%s = %r reached the mapper as %r" % (name, value, got))
+    # Every blend mode entry: the mapper's blend mode (vtkVolumeMapper's values).
+    for text, blend in (("Composite", 0), ("Maximum Intensity", 1), ("Minimum Intensity", 2),
+                        ("Isosurfaces", 5), ("Composite With Isosurfaces", 0)):
+        display.PPIRayBlendMode = text
+        Render(view)
+        if mapper.GetBlendMode() != blend:
+            failures.append("PPIRayBlendMode %s reached the mapper as %d" % (text, mapper.GetBlendMode()))
     pt.finish(failures)
 
 

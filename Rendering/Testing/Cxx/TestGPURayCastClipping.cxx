@@ -48,8 +48,7 @@ int TestGPURayCastClipping(int argc, char* argv[])
   const int n[3] = { 8, 8, 8 };
   const double origin[3] = { 0, 0, 0 };
   auto all = [](int, int, int) { return true; };
-  auto field = [](double x, double y, double z)
-  { return 0.3 + 0.7 * ppiray_test::Blob(x, y, z); };
+  auto field = [](double x, double y, double z) { return 0.3 + 0.7 * ppiray_test::Blob(x, y, z); };
   auto tetrahedra = ppiray_test::VoxelTetrahedra(n, 1.0 / 8, origin, all, field);
   auto hexahedra = ppiray_test::BlobVoxelBlock(8).Hexahedra;
 
@@ -117,10 +116,10 @@ int TestGPURayCastClipping(int argc, char* argv[])
     const auto unclipped =
       ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property, image, Size, Size);
     std::cout << clipping.Name << ": " << planes->GetNumberOfItems() << " planes, "
-              << mapper->GetNumberOfPeels() << " peels, " << check.Pixels
-              << " pixels covered, p99 " << check.P99 << " max " << check.MaxDifference
-              << " /255; against the unclipped reference p99 " << unclipped.P99
-              << "; messages [" << messages->Warnings << messages->Errors << "]\n";
+              << mapper->GetNumberOfPeels() << " peels, " << check.Pixels << " pixels covered, p99 "
+              << check.P99 << " max " << check.MaxDifference
+              << " /255; against the unclipped reference p99 " << unclipped.P99 << "; messages ["
+              << messages->Warnings << messages->Errors << "]\n";
     if (check.P99 > 1.0 || check.MaxDifference > 1.0)
     {
       std::cout << "FAILED: " << clipping.Name << " differs from the clipped reference\n";
