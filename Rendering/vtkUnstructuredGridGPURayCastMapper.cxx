@@ -23,6 +23,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
+#include "vtkVolumeCollection.h"
 #include "vtkVolumeProperty.h"
 
 #include <glm/geometric.hpp>
@@ -62,6 +63,7 @@ public:
   vtkPPIRayMarchShader MarchShader;
   vtkPPIRayDepthPeeling Peeling;
   int ClippingPlanesWarned = 0;      // the count of planes last warned about
+  bool OverlapWarned = false;        // overlapping PPIRay volumes were reported
   std::vector<float> Section;        // this frame's near-plane sections
   std::vector<float> ClippingPlanes; // this frame's clipping planes, local frame
 
@@ -379,6 +381,44 @@ void vtkUnstructuredGridGPURayCastMapper::ClippingPlanesInLocalFrame(
 }
 
 //------------------------------------------------------------------------------
+void vtkUnstructuredGridGPURayCastMapper::WarnAboutOverlappingVolumes(
+  vtkRenderer* ren, vtkVolume* vol)
+{
+  // Each PPIRay volume composites its whole image over what was drawn before
+  // it: overlapping ones are not interleaved per pixel.
+  double bounds[6];
+  vol->GetBounds(bounds);
+  int overlapping = 0;
+  vtkVolumeCollection* volumes = ren->GetVolumes();
+  vtkCollectionSimpleIterator it;
+  volumes->InitTraversal(it);
+  while (vtkVolume* other = volumes->GetNextVolume(it))
+  {
+    if (other == vol || !other->GetVisibility() ||
+        !vtkUnstructuredGridGPURayCastMapper::SafeDownCast(other->GetMapper()))
+    {
+      continue;
+    }
+    const double* b = other->GetBounds();
+    bool overlaps = b != nullptr;
+    for (int i = 0; overlaps && i < 3; ++i)
+    {
+      overlaps = b[2 * i] <= bounds[2 * i + 1] && bounds[2 * i] <= b[2 * i + 1];
+    }
+    overlapping += overlaps ? 1 : 0;
+  }
+  vtkInternals& in = *this->Internals;
+  if (overlapping > 0 && !in.OverlapWarned)
+  {
+    vtkWarningMacro(<< overlapping
+                    << " other PPIRay volumes overlap this one: each is composited whole over "
+                       "what was rendered before it, in the renderer's order, not interleaved "
+                       "per pixel.");
+  }
+  in.OverlapWarned = overlapping > 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   this->NumberOfPeels = 0;
@@ -400,6 +440,7 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
 
   // Find what is stale and update the collaborators, on the CPU, then the GPU.
   vtkInternals& in = *this->Internals;
+  this->WarnAboutOverlappingVolumes(ren, vol);
   const ppiray::IsoSurfaceMode isoMode =
     in.IsoSurfaces.Update(ren, vol, this->BlendMode, this->EmbedIsoSurfaces != 0, this);
   if (!this->UpdateCells(input, context) || !this->UpdateField(input) ||

@@ -314,6 +314,8 @@ protected:
   bool UpdateCells(vtkUnstructuredGridBase* input, vtkOpenGLRenderWindow* context);
   bool UpdateField(vtkUnstructuredGridBase* input);
   bool UpdateIntegrator(vtkOpenGLRenderWindow* context);
+  // Warns once when other PPIRay volumes of the renderer overlap `vol`.
+  void WarnAboutOverlappingVolumes(vtkRenderer* ren, vtkVolume* vol);
   // The clipping planes (at most 6) in the cells' local frame, 4 floats each.
   void ClippingPlanesInLocalFrame(vtkMatrix4x4* localToWorld, std::vector<float>& planes);
 

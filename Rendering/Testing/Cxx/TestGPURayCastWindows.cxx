@@ -1,0 +1,130 @@
+// What a window does to a mapper between frames: a resize (the render
+// targets follow the viewport), two viewports with a PPIRay volume each (one
+// mapper's targets per renderer, each its own size), and two overlapping
+// PPIRay volumes in one renderer (each composited whole over what was
+// rendered before it: a documented limit, reported once by a warning).
+//
+// Every image against the reference renderer at its viewport's size: every
+// covered pixel, p99 and max at most 1/255 (8-bit rounding 0.5, float, the
+// 0.1/255 transfer-function tolerance), and the covered pixels counted.
+
+#include "PPIRayPixelCheck.h"
+#include "PPIRayTestScenes.h"
+#include "vtkCamera.h"
+#include "vtkUnstructuredGridGPURayCastMapper.h"
+
+#include <iostream>
+#include <vector>
+
+namespace
+{
+// The pixels of the window's image inside [x0, x0 + w) x [y0, y0 + h).
+std::vector<unsigned char> Crop(
+  const std::vector<unsigned char>& image, int width, int x0, int y0, int w, int h)
+{
+  std::vector<unsigned char> part;
+  for (int y = y0; y < y0 + h; ++y)
+  {
+    part.insert(part.end(), image.begin() + 3 * (y * width + x0),
+      image.begin() + 3 * (y * width + x0 + w));
+  }
+  return part;
+}
+
+int Expect(const char* what, const ppiray_test::PixelCheck& check, int minimumPixels)
+{
+  std::cout << what << ": ";
+  int errors = ppiray_test::ExpectCoverage(check, minimumPixels);
+  if (check.P99 > 1.0 || check.MaxDifference > 1.0)
+  {
+    std::cout << "FAILED: " << what << " differs from the reference\n";
+    ++errors;
+  }
+  return errors;
+}
+}
+
+int TestGPURayCastWindows(int, char*[])
+{
+  const int n[3] = { 6, 6, 6 };
+  const double origin[3] = { 0, 0, 0 };
+  auto all = [](int, int, int) { return true; };
+  auto grid = ppiray_test::VoxelTetrahedra(n, 1.0 / 6, origin, all, ppiray_test::Blob);
+  int errors = 0;
+
+  // 1. A resize between renders.
+  {
+    ppiray_test::Scene scene(120, 120);
+    ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    scene.Show(mapper, grid, { 2.5, -1.5, 1.8 }, { 0.5, 0.5, 0.5 });
+    scene.Window->Render();
+    errors += Expect("120x120", ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property,
+                                  ppiray_test::ReadRGB(scene.Window), 120, 120),
+      2000);
+    scene.Window->SetSize(170, 130);
+    scene.Window->Render();
+    errors += Expect("resized to 170x130", ppiray_test::CheckPixels(scene.Renderer, grid,
+                                             scene.Property, ppiray_test::ReadRGB(scene.Window),
+                                             170, 130),
+      2000);
+  }
+
+  // 2. Two viewports, a PPIRay volume in each, seen from two sides.
+  {
+    ppiray_test::Scene scene(240, 120);
+    scene.Renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
+    ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> left;
+    scene.Show(left, grid, { 2.5, -1.5, 1.8 }, { 0.5, 0.5, 0.5 });
+    vtkNew<vtkRenderer> second;
+    second->SetViewport(0.5, 0.0, 1.0, 1.0);
+    second->SetBackground(0.0, 0.0, 0.0);
+    scene.Window->AddRenderer(second);
+    vtkNew<vtkVolume> volume;
+    volume->SetProperty(scene.Property);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> right;
+    right->SetInputData(grid);
+    volume->SetMapper(right);
+    second->AddVolume(volume);
+    second->GetActiveCamera()->SetPosition(-1.5, 2.5, -0.8);
+    second->GetActiveCamera()->SetFocalPoint(0.5, 0.5, 0.5);
+    second->ResetCamera();
+    scene.Window->Render();
+    const auto image = ppiray_test::ReadRGB(scene.Window);
+    errors += Expect("left viewport", ppiray_test::CheckPixels(scene.Renderer, grid,
+                                        scene.Property, Crop(image, 240, 0, 0, 120, 120), 120, 120),
+      2000);
+    errors += Expect("right viewport", ppiray_test::CheckPixels(second, grid, scene.Property,
+                                         Crop(image, 240, 120, 0, 120, 120), 120, 120),
+      2000);
+  }
+
+  // 3. Two overlapping PPIRay volumes in one renderer: a warning, once.
+  {
+    ppiray_test::Scene scene(120, 120);
+    ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> first;
+    vtkNew<ppiray_test::MessageCollector> messages;
+    first->AddObserver(vtkCommand::WarningEvent, messages);
+    scene.Show(first, grid, { 2.5, -1.5, 1.8 }, { 0.5, 0.5, 0.5 });
+    vtkNew<vtkVolume> volume;
+    volume->SetProperty(scene.Property);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> other;
+    other->SetInputData(grid);
+    volume->SetMapper(other);
+    volume->SetPosition(0.3, 0.2, 0.1);
+    scene.Renderer->AddVolume(volume);
+    scene.Window->Render();
+    scene.Window->Render();
+    const size_t first_at = messages->Warnings.find("overlap");
+    std::cout << "overlapping volumes: [" << messages->Warnings << "]\n";
+    if (first_at == std::string::npos ||
+      messages->Warnings.find("overlap", first_at + 1) != std::string::npos)
+    {
+      std::cout << "FAILED: overlapping PPIRay volumes are not reported once\n";
+      ++errors;
+    }
+  }
+  return errors ? 1 : 0;
+}
