@@ -140,6 +140,7 @@ inline double Blob(double x, double y, double z)
 // vtkAppendFilter, VTK_VOXEL cells) and the same cells as VTK_HEXAHEDRON.
 struct VoxelBlock
 {
+  vtkSmartPointer<vtkImageData> Image; // the same points and scalars
   vtkSmartPointer<vtkUnstructuredGrid> Voxels;
   vtkSmartPointer<vtkUnstructuredGrid> Hexahedra;
 };
@@ -180,6 +181,7 @@ inline VoxelBlock BlobVoxelBlock(int n)
   append->AddInputData(image);
   append->Update();
   VoxelBlock block;
+  block.Image = image;
   block.Voxels = append->GetOutput();
   block.Hexahedra = VoxelsAsHexahedra(block.Voxels);
   return block;

@@ -25,8 +25,8 @@ std::vector<unsigned char> Crop(
   std::vector<unsigned char> part;
   for (int y = y0; y < y0 + h; ++y)
   {
-    part.insert(part.end(), image.begin() + 3 * (y * width + x0),
-      image.begin() + 3 * (y * width + x0 + w));
+    part.insert(
+      part.end(), image.begin() + 3 * (y * width + x0), image.begin() + 3 * (y * width + x0 + w));
   }
   return part;
 }
@@ -59,14 +59,15 @@ int TestGPURayCastWindows(int, char*[])
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
     scene.Show(mapper, grid, { 2.5, -1.5, 1.8 }, { 0.5, 0.5, 0.5 });
     scene.Window->Render();
-    errors += Expect("120x120", ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property,
-                                  ppiray_test::ReadRGB(scene.Window), 120, 120),
+    errors += Expect("120x120",
+      ppiray_test::CheckPixels(
+        scene.Renderer, grid, scene.Property, ppiray_test::ReadRGB(scene.Window), 120, 120),
       2000);
     scene.Window->SetSize(170, 130);
     scene.Window->Render();
-    errors += Expect("resized to 170x130", ppiray_test::CheckPixels(scene.Renderer, grid,
-                                             scene.Property, ppiray_test::ReadRGB(scene.Window),
-                                             170, 130),
+    errors += Expect("resized to 170x130",
+      ppiray_test::CheckPixels(
+        scene.Renderer, grid, scene.Property, ppiray_test::ReadRGB(scene.Window), 170, 130),
       2000);
   }
 
@@ -92,11 +93,13 @@ int TestGPURayCastWindows(int, char*[])
     second->ResetCamera();
     scene.Window->Render();
     const auto image = ppiray_test::ReadRGB(scene.Window);
-    errors += Expect("left viewport", ppiray_test::CheckPixels(scene.Renderer, grid,
-                                        scene.Property, Crop(image, 240, 0, 0, 120, 120), 120, 120),
+    errors += Expect("left viewport",
+      ppiray_test::CheckPixels(
+        scene.Renderer, grid, scene.Property, Crop(image, 240, 0, 0, 120, 120), 120, 120),
       2000);
-    errors += Expect("right viewport", ppiray_test::CheckPixels(second, grid, scene.Property,
-                                         Crop(image, 240, 120, 0, 120, 120), 120, 120),
+    errors += Expect("right viewport",
+      ppiray_test::CheckPixels(
+        second, grid, scene.Property, Crop(image, 240, 120, 0, 120, 120), 120, 120),
       2000);
   }
 
@@ -120,7 +123,7 @@ int TestGPURayCastWindows(int, char*[])
     const size_t first_at = messages->Warnings.find("overlap");
     std::cout << "overlapping volumes: [" << messages->Warnings << "]\n";
     if (first_at == std::string::npos ||
-      messages->Warnings.find("overlap", first_at + 1) != std::string::npos)
+        messages->Warnings.find("overlap", first_at + 1) != std::string::npos)
     {
       std::cout << "FAILED: overlapping PPIRay volumes are not reported once\n";
       ++errors;
