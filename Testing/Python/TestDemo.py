@@ -1,0 +1,68 @@
+"""Module/run demo as a user meets it: the bundled mesh (default comparison:
+all), the can's hexahedra (a user file: no comparison, the first field that
+is not an id: cell EQPS, rendered natively), a mesh of triangles only (exit
+1, "no 3D cells"), a missing file and an unknown array (exit 1, a message,
+no speed-up printed). Skips (125) the can when the data root is absent.
+
+Run: TestDemo.py DATA_ROOT SCRATCH_DIR
+"""
+import os
+import subprocess
+import sys
+
+from vtkmodules.vtkFiltersSources import vtkSphereSource
+from vtkmodules.vtkFiltersCore import vtkAppendFilter
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
+
+DEMO = os.path.join(os.path.dirname(os.path.abspath(__file__)), "ppiray_demo.py")
+
+
+def demo(*args):
+    run = subprocess.run([sys.executable, DEMO, "--size", "96", "--frames", "1"] + list(args),
+                         capture_output=True, text=True, timeout=600)
+    print("$ demo %s -> exit %d\n%s%s" % (" ".join(args), run.returncode, run.stdout,
+                                          run.stderr[-600:]))
+    return run
+
+
+def main(data, scratch):
+    os.makedirs(scratch, exist_ok=True)
+    failures = []
+
+    run = demo("--out", os.path.join(scratch, "bundled.png"))
+    if run.returncode != 0 or "tetrahedra" not in run.stdout or "reference" not in run.stdout:
+        failures.append("the bundled mesh: exit 0, tetrahedra and the comparison expected")
+
+    can = os.path.join(data, "can", "can.vtu")
+    skipped = not os.path.exists(can)
+    if not skipped:
+        run = demo(can, "--out", os.path.join(scratch, "can.png"))
+        if (run.returncode != 0 or "cell EQPS" not in run.stdout
+                or "hexahedra natively" not in run.stdout or "faster" in run.stdout):
+            failures.append("can.vtu: cell EQPS, native hexahedra and no comparison expected")
+
+    sphere = vtkSphereSource()
+    append = vtkAppendFilter()
+    append.AddInputConnection(sphere.GetOutputPort())
+    writer = vtkXMLUnstructuredGridWriter()
+    triangles = os.path.join(scratch, "triangles.vtu")
+    writer.SetFileName(triangles)
+    writer.SetInputConnection(append.GetOutputPort())
+    writer.Write()
+    for args, message in (((triangles,), "no 3D cells"),
+                          ((os.path.join(scratch, "missing.vtu"),), "no such file"),
+                          (("--array", "nothing"), "no point or cell array named nothing")):
+        run = demo(*args)
+        if run.returncode == 0 or message not in run.stderr or "faster" in run.stdout:
+            failures.append("%s: exit 1 with '%s' expected" % (" ".join(args), message))
+
+    for failure in failures:
+        print("FAILED: " + failure)
+    sys.exit(1 if failures else (125 if skipped else 0))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        print(__doc__)
+        sys.exit(2)
+    main(*sys.argv[1:])

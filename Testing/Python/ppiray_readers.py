@@ -1,0 +1,102 @@
+"""Reading what users bring for volumes, as one vtkUnstructuredGrid: XML
+(.vtu .vts .vtr .vti .vtm .pvtu .pvd), legacy .vtk, Exodus (.e .ex2 .exo
+.exii), PLOT3D (an xyz file with --q); composite data merged (structured
+cells as hexahedra or voxels). read() raises ReadError with a message a user
+can act on.
+"""
+import os
+
+from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet
+from vtkmodules.vtkFiltersCore import vtkAppendFilter
+from vtkmodules.vtkIOExodus import vtkExodusIIReader
+from vtkmodules.vtkIOLegacy import vtkDataSetReader
+from vtkmodules.vtkIOParallel import vtkMultiBlockPLOT3DReader
+from vtkmodules.vtkIOXML import vtkXMLGenericDataObjectReader
+
+XML = (".vtu", ".vts", ".vtr", ".vti", ".vtm", ".vtmb", ".pvtu", ".pvts", ".pvtr", ".pvti")
+EXODUS = (".e", ".ex2", ".exo", ".exii", ".g", ".gen")
+
+
+class ReadError(Exception):
+    pass
+
+
+def merged(data):
+    """An unstructured grid of every leaf of `data`."""
+    append = vtkAppendFilter()
+    if isinstance(data, vtkCompositeDataSet):
+        it = data.NewIterator()
+        it.InitTraversal()
+        while not it.IsDoneWithTraversal():
+            append.AddInputData(it.GetCurrentDataObject())
+            it.GoToNextItem()
+    else:
+        append.AddInputData(data)
+    append.Update()
+    return append.GetOutput()
+
+
+def pvd_file(path, step):
+    """The data file of time step `step` (index) of a .pvd collection."""
+    from xml.etree import ElementTree
+    entries = ElementTree.parse(path).getroot().findall("./Collection/DataSet")
+    if not entries:
+        raise ReadError("%s lists no data sets" % path)
+    if not 0 <= step < len(entries):
+        raise ReadError("%s has %d time steps; --time-step %d is not one" % (
+            path, len(entries), step))
+    return os.path.join(os.path.dirname(path), entries[step].get("file"))
+
+
+def read(path, q=None, time_step=0):
+    """The cells of `path` as a vtkUnstructuredGrid, with every array."""
+    if not os.path.isfile(path):
+        raise ReadError("no such file: %s" % path)
+    ext = os.path.splitext(path)[1].lower()
+    if ext == ".pvd":
+        return read(pvd_file(path, time_step))
+    if ext in XML:
+        reader = vtkXMLGenericDataObjectReader()
+    elif ext == ".vtk":
+        reader = vtkDataSetReader()
+        reader.ReadAllScalarsOn()
+        reader.ReadAllVectorsOn()
+    elif ext in EXODUS:
+        reader = vtkExodusIIReader()
+        reader.SetFileName(path)
+        reader.UpdateInformation()
+        for i in range(reader.GetNumberOfPointResultArrays()):
+            reader.SetPointResultArrayStatus(reader.GetPointResultArrayName(i), 1)
+        for i in range(reader.GetNumberOfElementResultArrays()):
+            reader.SetElementResultArrayStatus(reader.GetElementResultArrayName(i), 1)
+        reader.SetTimeStep(time_step)
+    elif q is not None or ext in (".xyz", ".bin", ".x", ".g3d"):
+        if q is None:
+            raise ReadError("a PLOT3D grid needs its solution file: --q FILE")
+        reader = vtkMultiBlockPLOT3DReader()
+        reader.SetXYZFileName(path)
+        reader.SetQFileName(q)
+        reader.AutoDetectFormatOn()
+    else:
+        raise ReadError("unknown file type %s (XML %s, legacy .vtk, Exodus %s, .pvd, PLOT3D "
+                        "with --q)" % (ext, " ".join(XML), " ".join(EXODUS)))
+    if not isinstance(reader, vtkExodusIIReader) and not isinstance(
+            reader, vtkMultiBlockPLOT3DReader):
+        reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutputDataObject(0)
+    if data is None:
+        raise ReadError("could not read %s" % path)
+    grid = merged(data)
+    if grid.GetNumberOfCells() == 0:
+        raise ReadError("%s holds no cells" % path)
+    return grid
+
+
+def three_d_cells(grid):
+    """How many cells of `grid` are 3D."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkCommonDataModel import vtkCellTypes
+    types, counts = np.unique(vtk_to_numpy(grid.GetCellTypesArray()), return_counts=True)
+    return int(sum(n for t, n in zip(types, counts) if vtkCellTypes.GetDimension(int(t)) == 3))
