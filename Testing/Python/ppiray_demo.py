@@ -2,8 +2,9 @@
 
 Reads FILE (default: the bundled Data/wavelet_hole.vtu): XML (.vtu .vts .vtr
 .vti .vtm .pvtu .pvd), legacy .vtk, Exodus (.e .ex2 .exo), PLOT3D (xyz file
-with --q). Renders its 3D cells with vtkUnstructuredGridGPURayCastMapper,
-writes the image and prints the frame time, the cells rendered (tetrahedra,
+with --q). Renders its 3D cells with vtkUnstructuredGridGPURayCastMapper as
+ParaView shows a new volume (Cool to Warm, opacity ramp 0 to 1, unit
+distance about one cell), writes the image and prints the frame time, the cells rendered (tetrahedra,
 native hexahedra) and the GPU memory. --compare adds the error against the
 exact CPU reference (vtkUnstructuredGridReferenceRenderer) and/or the time
 and error of VTK's CPU ray caster (vtkUnstructuredGridVolumeRayCastMapper).
@@ -23,7 +24,7 @@ from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
 from vtkmodules.vtkRenderingVolume import vtkUnstructuredGridVolumeRayCastMapper
 
 from ppiray_readers import ReadError, read, three_d_cells
-from ppiray_scene import load, read_png, save, scene, volume_property
+from ppiray_scene import load, paraview_property, read_png, save, scene
 
 ROOT = os.environ.get("PPIRAY_ROOT", os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__)))))
@@ -32,12 +33,12 @@ BUNDLED = os.path.join(ROOT, "Data", "wavelet_hole.vtu")
 NOT_A_FIELD = re.compile(r"(ids?|ghosttype|validpointmask|blockid|objectid)$", re.IGNORECASE)
 
 
-def render_cpu_peer(path, out, size):
+def render_cpu_peer(path, out, size, unit_distance):
     grid = load(path)
     mapper = vtkUnstructuredGridVolumeRayCastMapper()
     mapper.SetImageSampleDistance(1.0)
     mapper.AutoAdjustSampleDistancesOff()
-    window, _ = scene(grid, mapper, size)
+    window, _ = scene(grid, mapper, size, paraview_property(grid, unit_distance))
     start = time.perf_counter()
     window.Render()
     window.WaitForCompletion()
@@ -108,6 +109,9 @@ def main():
                         "one-component array that is not an id, point data first)")
     parser.add_argument("--component", type=int,
                         help="component of a vector array (default: its magnitude)")
+    parser.add_argument("--unit-distance", type=float,
+                        help="the opacity's unit distance (default: about one cell, as ParaView "
+                        "sets it: the bounds' diagonal over the cube root of the cell count)")
     parser.add_argument("--out", default="demo.png", help="image written (default demo.png)")
     parser.add_argument("--size", type=int, default=512, help="window side in pixels (512)")
     parser.add_argument("--frames", type=int, default=10,
@@ -119,7 +123,7 @@ def main():
     parser.add_argument("--cpu-peer", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.cpu_peer:
-        render_cpu_peer(args.file, args.cpu_peer, args.size)
+        render_cpu_peer(args.file, args.cpu_peer, args.size, args.unit_distance)
         return 0
     compare = args.compare or ("all" if os.path.abspath(args.file) == BUNDLED else "none")
 
@@ -137,7 +141,8 @@ def main():
         return 1
 
     mapper = ppiray.vtkUnstructuredGridGPURayCastMapper()
-    window, renderer = scene(grid, mapper, args.size, volume_property(grid))
+    prop = paraview_property(grid, args.unit_distance)
+    window, renderer = scene(grid, mapper, args.size, prop)
     window.Render()  # warm-up: builds cell textures, compiles shaders
     window.WaitForCompletion()
     times = []
@@ -185,6 +190,7 @@ def main():
             writer.SetInputData(grid)
             writer.Write()
             run = subprocess.run([sys.executable, __file__, prepared, "--size", str(args.size),
+                                  "--unit-distance", repr(prop.GetScalarOpacityUnitDistance()),
                                   "--cpu-peer", peer], capture_output=True, text=True)
             if run.returncode != 0 or not os.path.exists(peer):
                 print("error     VTK's CPU ray caster failed (exit %d): %s" % (
