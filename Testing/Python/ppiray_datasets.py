@@ -7,31 +7,16 @@ import os
 
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkDoubleArray
-from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet
-from vtkmodules.vtkFiltersCore import vtkAppendFilter
 from vtkmodules.vtkIOExodus import vtkExodusIIReader
 from vtkmodules.vtkIOImage import vtkImageReader, vtkSLCReader
 from vtkmodules.vtkIOLegacy import vtkDataSetReader
 from vtkmodules.vtkIOParallel import vtkMultiBlockPLOT3DReader
 from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLUnstructuredGridReader
 
+from ppiray_readers import merged
+
 DATA = os.environ.get("PPIRAY_DATA_ROOT", os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                                          "..", "..", "..", "shared", "data"))
-
-
-def merged(data):
-    """An unstructured grid of every leaf (structured cells as hexahedra or voxels)."""
-    append = vtkAppendFilter()
-    if isinstance(data, vtkCompositeDataSet):
-        it = data.NewIterator()
-        it.InitTraversal()
-        while not it.IsDoneWithTraversal():
-            append.AddInputData(it.GetCurrentDataObject())
-            it.GoToNextItem()
-    else:
-        append.AddInputData(data)
-    append.Update()
-    return append.GetOutput()
 
 
 def plot3d(xyz, q, function=None):
