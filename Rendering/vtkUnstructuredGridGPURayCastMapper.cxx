@@ -394,7 +394,8 @@ void vtkUnstructuredGridGPURayCastMapper::WarnAboutOverlappingVolumes(
   volumes->InitTraversal(it);
   while (vtkVolume* other = volumes->GetNextVolume(it))
   {
-    if (other == vol || !other->GetVisibility() ||
+    // A prop that wraps `vol` (ParaView's vtkPVLODVolume) shares this mapper.
+    if (other == vol || other->GetMapper() == this || !other->GetVisibility() ||
         !vtkUnstructuredGridGPURayCastMapper::SafeDownCast(other->GetMapper()))
     {
       continue;

@@ -2,7 +2,9 @@
 // targets follow the viewport), two viewports with a PPIRay volume each (one
 // mapper's targets per renderer, each its own size), and two overlapping
 // PPIRay volumes in one renderer (each composited whole over what was
-// rendered before it: a documented limit, reported once by a warning).
+// rendered before it: a documented limit, reported once by a warning; a
+// second prop with the same mapper, as ParaView's LOD volume wraps one, is
+// not reported).
 //
 // Every image against the reference renderer at its viewport's size: every
 // covered pixel, p99 and max at most 1/255 (8-bit rounding 0.5, float, the
@@ -126,6 +128,27 @@ int TestGPURayCastWindows(int, char*[])
         messages->Warnings.find("overlap", first_at + 1) != std::string::npos)
     {
       std::cout << "FAILED: overlapping PPIRay volumes are not reported once\n";
+      ++errors;
+    }
+  }
+  // 4. A prop wrapping a volume with the same mapper (as ParaView's
+  // vtkPVLODVolume does) is not another volume: no warning.
+  {
+    ppiray_test::Scene scene(120, 120);
+    ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    vtkNew<ppiray_test::MessageCollector> messages;
+    mapper->AddObserver(vtkCommand::WarningEvent, messages);
+    scene.Show(mapper, grid, { 2.5, -1.5, 1.8 }, { 0.5, 0.5, 0.5 });
+    vtkNew<vtkVolume> wrapper;
+    wrapper->SetMapper(mapper);
+    wrapper->SetProperty(scene.Property);
+    scene.Renderer->AddVolume(wrapper);
+    scene.Window->Render();
+    std::cout << "a volume sharing the mapper: [" << messages->Warnings << "]\n";
+    if (messages->Warnings.find("overlap") != std::string::npos)
+    {
+      std::cout << "FAILED: a volume sharing this mapper is reported as overlapping\n";
       ++errors;
     }
   }
