@@ -21,7 +21,7 @@ IsoSurfaceMode ChooseIsoSurfaceMode(
 {
   constexpr int compositeBlend = 0;  // vtkVolumeMapper::COMPOSITE_BLEND
   constexpr int maximumBlend = 1;    // vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND
-  constexpr int minimumBlend = 2;    // vtkVolumeMapper::MINIMUM_INTENSITY_BLEND
+  constexpr int additiveBlend = 4;   // vtkVolumeMapper::ADDITIVE_BLEND
   constexpr int isoSurfaceBlend = 5; // vtkVolumeMapper::ISOSURFACE_BLEND
   warning.clear();
   if (blendMode == isoSurfaceBlend)
@@ -33,14 +33,15 @@ IsoSurfaceMode ChooseIsoSurfaceMode(
     }
     return IsoSurfacesOnly;
   }
-  if (blendMode == maximumBlend || blendMode == minimumBlend)
+  if (blendMode >= maximumBlend && blendMode <= additiveBlend)
   {
     return NoIsoSurfaces; // projections draw no surfaces
   }
   if (blendMode != compositeBlend)
   {
     warning = "Blend mode " + std::to_string(blendMode) +
-              " is not supported (composite, maximum and minimum intensity, isosurface); rendering "
+              " is not supported (composite, maximum, minimum and average intensity, additive, "
+              "isosurface); rendering "
               "composite.";
     return NoIsoSurfaces;
   }

@@ -32,14 +32,32 @@ void IntegrateRay(std::vector<Segment>& segments, const TransferFunction& tf,
   const IsoSurfaces& iso, const Vec3& origin, const Vec3& direction, const Vec3& centre,
   const GradientAt& gradientAt, float rgba[4]);
 
+/** A projection's blend mode and what the average and additive ones read. */
+struct Projection
+{
+  enum Mode
+  {
+    Maximum = 1, // vtkVolumeMapper's values
+    Minimum = 2,
+    Average = 3,
+    Additive = 4
+  };
+  int Blend = Maximum;
+  double Normalize[2] = { 1, 0 };    // n(s) = Normalize[0] s + Normalize[1]
+  double AverageRange[2] = { 0, 0 }; // AVERAGE_INTENSITY_BLEND's scalar range
+};
+
 /**
- * Maximum (`maximum` true) or minimum intensity projection of the segments:
- * the extreme of their end values (the scalar is linear on each), coloured
- * by the transfer function there with alpha = its scalar opacity
- * (tau x unit distance), premultiplied; zero when there is no segment.
+ * A projection of the segments, as vtkGPUVolumeRayCastMapper defines it.
+ * Maximum or minimum intensity: the extreme of their end values (the scalar
+ * is linear on each), coloured by the transfer function there with alpha =
+ * its scalar opacity (tau x unit distance), premultiplied. Average: over the
+ * parts with s in AverageRange, unit distance x int tau(s) n(s) dt / int dt;
+ * additive: int tau(s) n(s) dt; both grey, clamped to 1, alpha 1 (n: the
+ * scalar normalized to the field's range). Zero where no segment counts.
  */
 void ProjectRay(
-  const std::vector<Segment>& segments, const TransferFunction& tf, bool maximum, float rgba[4]);
+  std::vector<Segment>& segments, const TransferFunction& tf, const Projection& how, float rgba[4]);
 }
 }
 

@@ -188,7 +188,13 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
   }
 
   const bool projection =
-    this->BlendMode == MAXIMUM_INTENSITY_BLEND || this->BlendMode == MINIMUM_INTENSITY_BLEND;
+    this->BlendMode >= MAXIMUM_INTENSITY_BLEND && this->BlendMode <= ADDITIVE_BLEND;
+  Projection how;
+  how.Blend = this->BlendMode;
+  const double scalarWidth = scalarRange[1] - scalarRange[0];
+  how.Normalize[0] = scalarWidth > 0 ? 1.0 / scalarWidth : 0.0;
+  how.Normalize[1] = scalarWidth > 0 ? -scalarRange[0] / scalarWidth : 1.0;
+  std::copy_n(this->AverageIPScalarRange, 2, how.AverageRange);
   ScreenTiles tiles;
   tiles.Build(input, cells, worldToClip, width, height);
   const int tilesX = tiles.TilesX, TileSize = ScreenTiles::Size;
@@ -300,7 +306,7 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
         float* pixel = out + 4 * (static_cast<size_t>(py) * width + px);
         if (projection)
         {
-          ProjectRay(segments, tf, this->BlendMode == MAXIMUM_INTENSITY_BLEND, pixel);
+          ProjectRay(segments, tf, how, pixel);
         }
         else
         {
@@ -333,6 +339,8 @@ void vtkUnstructuredGridReferenceRenderer::PrintSelf(ostream& os, vtkIndent inde
   os << indent << "TransferFunctionTolerance: " << this->TransferFunctionTolerance << "\n";
   os << indent << "QuadratureTolerance: " << this->QuadratureTolerance << "\n";
   os << indent << "BlendMode: " << this->BlendMode << "\n";
+  os << indent << "AverageIPScalarRange: (" << this->AverageIPScalarRange[0] << ", "
+     << this->AverageIPScalarRange[1] << ")\n";
   os << indent << "EmbedIsoSurfaces: " << this->EmbedIsoSurfaces << "\n";
   os << indent << "Lights: " << this->Lights << "\n";
   os << indent << "ClippingPlanes: " << this->ClippingPlanes << "\n";

@@ -109,13 +109,19 @@ public:
    * Blend modes, with vtkVolumeMapper's names and values: composite
    * (default), maximum or minimum intensity projection (the extreme scalar
    * along the ray with the transfer function's colour and scalar opacity
-   * there, premultiplied), or isosurfaces only.
+   * there, premultiplied), average intensity (over the parts of the ray with
+   * the scalar in AverageIPScalarRange, the length-weighted mean of scalar
+   * opacity x the scalar normalized to its range; grey, opacity 1), additive
+   * (the integral of scalar opacity x normalized scalar per unit distance;
+   * grey clamped to 1, opacity 1), or isosurfaces only.
    */
   enum
   {
     COMPOSITE_BLEND = 0,
     MAXIMUM_INTENSITY_BLEND = 1,
     MINIMUM_INTENSITY_BLEND = 2,
+    AVERAGE_INTENSITY_BLEND = 3,
+    ADDITIVE_BLEND = 4,
     ISOSURFACE_BLEND = 5
   };
   vtkSetMacro(BlendMode, int);
@@ -123,6 +129,13 @@ public:
   void SetBlendModeToIsoSurface() { this->SetBlendMode(ISOSURFACE_BLEND); }
   void SetBlendModeToMaximumIntensity() { this->SetBlendMode(MAXIMUM_INTENSITY_BLEND); }
   void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
+  void SetBlendModeToAverageIntensity() { this->SetBlendMode(AVERAGE_INTENSITY_BLEND); }
+  void SetBlendModeToAdditive() { this->SetBlendMode(ADDITIVE_BLEND); }
+  ///@{
+  /** AVERAGE_INTENSITY_BLEND's scalar range (default: every value). */
+  vtkSetVector2Macro(AverageIPScalarRange, double);
+  vtkGetVectorMacro(AverageIPScalarRange, double, 2);
+  ///@}
 
   ///@{
   /** In composite mode, also draw the isosurfaces embedded in the volume (default off). */
@@ -163,6 +176,7 @@ protected:
   double TransferFunctionTolerance = 1e-5;
   double QuadratureTolerance = 1e-6;
   int BlendMode = COMPOSITE_BLEND;
+  double AverageIPScalarRange[2] = { VTK_FLOAT_MIN, VTK_FLOAT_MAX };
   vtkTypeBool EmbedIsoSurfaces = 0;
   vtkLightCollection* Lights = nullptr;
   vtkPlaneCollection* ClippingPlanes = nullptr;

@@ -6,11 +6,13 @@
 
 #include "ppirayPlaneSection.h"
 
+#include "gauss_legendre_fs.h"
 #include "hexahedron_accurate_fs.h"
 #include "hexahedron_fast_fs.h"
 #include "hexahedron_field_fs.h"
 #include "march_common_fs.h"
 #include "march_hexahedra_fs.h"
+#include "projection_cubic_fs.h"
 
 //------------------------------------------------------------------------------
 vtkPPIRayCellBuffers::Layout vtkPPIRayHexahedralCellBuffers::GetLayout() const
@@ -38,6 +40,8 @@ std::string vtkPPIRayHexahedralCellBuffers::GetMarchShader(int hexahedronMode) c
     hexahedronMode == vtkUnstructuredGridGPURayCastMapper::HEXAHEDRON_ACCURATE
       ? hexahedron_accurate_fs
       : hexahedron_fast_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::GaussLegendre::Impl", gauss_legendre_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::ProjectionCubic::Impl", projection_cubic_fs);
   vtkShaderProgram::Substitute(march, "//PPIRay::MarchCommon::Impl", march_common_fs);
   vtkShaderProgram::Substitute(march, "//PPIRay::Cells::Dec",
     this->LayoutDeclarations() + "const bool FLAT_CELLS = false;\nconst bool FOLDS = " +

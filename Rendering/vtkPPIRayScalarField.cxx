@@ -104,3 +104,11 @@ vtkPPIRayScalarField::Status vtkPPIRayScalarField::Update(
   }
   return Status::Changed;
 }
+
+//------------------------------------------------------------------------------
+void vtkPPIRayScalarField::NormalizingMap(double ab[2]) const
+{
+  const double width = this->Range[1] - this->Range[0];
+  ab[0] = width > 0 ? 1.0 / width : 0.0;
+  ab[1] = width > 0 ? (this->Shift - this->Range[0]) / width : 1.0;
+}

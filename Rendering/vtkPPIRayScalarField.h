@@ -55,6 +55,12 @@ public:
   double GetShift() const { return this->Shift; }
   /** Range of the rendered values (before the shift). */
   const double* GetRange() const { return this->Range; }
+  /**
+   * (a, b) with a v + b the value v as stored (shifted) normalized to the
+   * range, (v + shift - min) / (max - min), as vtkGPUVolumeRayCastMapper's
+   * projections see a scalar; 1 for a constant field.
+   */
+  void NormalizingMap(double ab[2]) const;
   /** When the values last changed. */
   vtkMTimeType GetMTime() const { return this->Time.GetMTime(); }
 

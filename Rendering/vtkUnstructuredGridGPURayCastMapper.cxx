@@ -119,6 +119,26 @@ glm::dvec4 NearPlane(vtkMatrix4x4* clipToLocal)
   return glm::dvec4(n, glm::dot(n, a));
 }
 
+// The uniforms of the average-intensity and additive projections
+// (projection_fs.glsl): the normalizing map and the averaged range, shifted
+// as the scalars are.
+void ProjectionUniforms(
+  vtkShaderProgram* program, const vtkPPIRayScalarField& field, const double averageRange[2])
+{
+  double ab[2];
+  field.NormalizingMap(ab);
+  const float normalizing[2] = { static_cast<float>(ab[0]), static_cast<float>(ab[1]) };
+  program->SetUniform2f("normalizedScalar", normalizing);
+  const double limit = VTK_FLOAT_MAX;
+  float range[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    range[i] =
+      static_cast<float>(std::max(-limit, std::min(limit, averageRange[i] - field.GetShift())));
+  }
+  program->SetUniform2f("averageRange", range);
+}
+
 // Column-major float copy of a row-major VTK matrix, for glUniformMatrix4fv.
 void ColumnMajor(vtkMatrix4x4* m, float out[16])
 {
@@ -460,10 +480,11 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   {
     return;
   }
-  // Maximum (1) and minimum (2) intensity projection, else composite (0).
-  const int projection = this->BlendMode == MAXIMUM_INTENSITY_BLEND
-                           ? 1
-                           : (this->BlendMode == MINIMUM_INTENSITY_BLEND ? 2 : 0);
+  // A projection (the blend mode's value: maximum, minimum, average intensity,
+  // additive), else composite (0).
+  const bool projects =
+    this->BlendMode >= MAXIMUM_INTENSITY_BLEND && this->BlendMode <= ADDITIVE_BLEND;
+  const int projection = projects ? this->BlendMode : 0;
   vtkOpenGLQuadHelper* march = in.MarchShader.Ready(context,
     in.Cells->GetMarchShader(this->HexahedronMode), in.Integrator->GetShaderCode(),
     vtkPPIRayIsoSurfaceUniforms::Declarations(isoMode), projection, this);
@@ -518,6 +539,10 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
     program->SetUniformf("terminationAlpha", frame.TerminationAlpha);
     program->SetUniformf("opacityUnitDistance",
       static_cast<float>(vol->GetProperty()->GetScalarOpacityUnitDistance(0)));
+    if (projection >= AVERAGE_INTENSITY_BLEND)
+    {
+      ProjectionUniforms(program, in.Field, this->AverageIPScalarRange);
+    }
     if (isoMode != ppiray::NoIsoSurfaces)
     {
       in.IsoSurfaces.Bind(program, localToWorld, in.Field.GetShift());
@@ -541,6 +566,8 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "IntegrationMode: " << this->GetIntegrationModeAsString() << "\n";
   os << indent << "HexahedronMode: " << this->GetHexahedronModeAsString() << "\n";
   os << indent << "EmbedIsoSurfaces: " << this->EmbedIsoSurfaces << "\n";
+  os << indent << "AverageIPScalarRange: (" << this->AverageIPScalarRange[0] << ", "
+     << this->AverageIPScalarRange[1] << ")\n";
   os << indent << "VectorMode: " << (this->VectorMode == MAGNITUDE ? "MAGNITUDE" : "COMPONENT")
      << "\n";
   os << indent << "VectorComponent: " << this->VectorComponent << "\n";

@@ -147,15 +147,37 @@ public:
    * smallest scalar along the ray, exact per cell (at a segment's end, or at
    * an extremum of the cubic in a hexahedron), with the transfer function's
    * colour and scalar opacity there, as vtkGPUVolumeRayCastMapper colours
-   * it. Other blend modes render composite, with a warning.
+   * it. AVERAGE_INTENSITY_BLEND: over the parts of the ray where the scalar
+   * lies in AverageIPScalarRange, the length-weighted average of scalar
+   * opacity x scalar normalized to the array's range, as grey with opacity 1
+   * (nothing where no part is in the range). ADDITIVE_BLEND: the integral
+   * of scalar opacity x normalized scalar along the ray, per unit distance
+   * (ScalarOpacityUnitDistance), as grey clamped to 1 with opacity 1: what
+   * vtkGPUVolumeRayCastMapper sums over samples one unit distance apart,
+   * independent of sampling. Both exact per cell (the integrand is quadratic
+   * in the scalar between control points). Other blend modes render
+   * composite, with a warning.
    */
   enum
   {
     MINIMUM_INTENSITY_BLEND = 2,
+    AVERAGE_INTENSITY_BLEND = 3,
+    ADDITIVE_BLEND = 4,
     ISOSURFACE_BLEND = 5
   };
   void SetBlendModeToIsoSurface() { this->SetBlendMode(ISOSURFACE_BLEND); }
   void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
+  void SetBlendModeToAverageIntensity() { this->SetBlendMode(AVERAGE_INTENSITY_BLEND); }
+  void SetBlendModeToAdditive() { this->SetBlendMode(ADDITIVE_BLEND); }
+
+  ///@{
+  /**
+   * The scalar range AVERAGE_INTENSITY_BLEND averages over, in the array's
+   * units (vtkVolumeMapper's; default: every value).
+   */
+  vtkSetVector2Macro(AverageIPScalarRange, double);
+  vtkGetVectorMacro(AverageIPScalarRange, double, 2);
+  ///@}
 
   /**
    * What a frame draws of the isosurfaces (from the blend mode,
@@ -299,6 +321,7 @@ protected:
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
   int HexahedronMode = HEXAHEDRON_ACCURATE;
   vtkTypeBool EmbedIsoSurfaces = 0;
+  double AverageIPScalarRange[2] = { VTK_FLOAT_MIN, VTK_FLOAT_MAX };
   int VectorMode = MAGNITUDE;
   int VectorComponent = 0;
   int MaximumNumberOfPeels = 64;

@@ -181,9 +181,17 @@ void vtkPPIRayVolumeRepresentation::SetPPIRayBlendMode(int mode)
   const int blend = mode == Mapper::ISOSURFACES_ONLY ? static_cast<int>(Mapper::ISOSURFACE_BLEND)
                     : mode == MaximumIntensity ? static_cast<int>(Mapper::MAXIMUM_INTENSITY_BLEND)
                     : mode == MinimumIntensity ? static_cast<int>(Mapper::MINIMUM_INTENSITY_BLEND)
+                    : mode == AverageIntensity ? static_cast<int>(Mapper::AVERAGE_INTENSITY_BLEND)
+                    : mode == Additive         ? static_cast<int>(Mapper::ADDITIVE_BLEND)
                                                : static_cast<int>(Mapper::COMPOSITE_BLEND);
   this->Mapper->SetBlendMode(blend);
   this->Mapper->SetEmbedIsoSurfaces(mode == Mapper::EMBEDDED_ISOSURFACES);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayVolumeRepresentation::SetAverageIPScalarRange(double lo, double hi)
+{
+  this->Mapper->SetAverageIPScalarRange(lo, hi);
 }
 
 //------------------------------------------------------------------------------

@@ -57,13 +57,18 @@ public:
   void SetTerminationOpacity(double opacity);
   // The mapper's NO_ISOSURFACES (composite), EMBEDDED_ISOSURFACES (composite
   // with the isosurfaces embedded) or ISOSURFACES_ONLY (ISOSURFACE_BLEND), or
-  // MaximumIntensity, MinimumIntensity (the projections).
+  // MaximumIntensity, MinimumIntensity, AverageIntensity, Additive (the
+  // projections).
   enum
   {
     MaximumIntensity = 3,
-    MinimumIntensity = 4
+    MinimumIntensity = 4,
+    AverageIntensity = 5,
+    Additive = 6
   };
   void SetPPIRayBlendMode(int mode);
+  // The scalar range the average intensity projection averages.
+  void SetAverageIPScalarRange(double lo, double hi);
   // The isovalues, in the volume property (vtkImageVolumeRepresentation's
   // names, so that ParaView's isovalue widgets drive them the same way).
   void SetIsosurfaceValue(int i, double value);

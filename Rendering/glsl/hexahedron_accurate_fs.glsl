@@ -9,9 +9,6 @@
 // by 4-point Gauss-Legendre quadrature on 1 to 8 equal sub-intervals (more
 // when the piece is optically thick, where exp(-Z) varies fastest).
 
-const float GAUSS_NODE[2] = float[2](0.3399810435848563, 0.8611363115940526);
-const float GAUSS_WEIGHT[2] = float[2](0.6521451548625461, 0.3478548451374538);
-
 void integrateCubicPiece(vec4 w, float xA, float xB, float sA, float sB, vec4 tfA, vec4 tfB,
   inout vec4 color)
 {

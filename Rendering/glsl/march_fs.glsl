@@ -153,10 +153,8 @@ void main()
   vec3 origin, direction;
   pixelRay(ndc, origin, direction);
 
-  // A projection's extreme so far (earlier peels).
-  float extreme;
-  bool met;
-  previousExtreme(pixel, extreme, met);
+  // A projection's state so far (earlier peels).
+  vec3 projection = previousProjection(pixel);
 
   // Opaque geometry stops the ray at its depth; clipping planes keep
   // [tKept, tStop] of it.
@@ -238,8 +236,7 @@ void main()
           }
           else
           {
-            meetScalar(sFront, extreme, met);
-            meetScalar(sBack, extreme, met);
+            projectLinearStretch(sFront, sBack, tEnd - tFrom, k, projection);
           }
         }
         reached = max(reached, tEnd);
@@ -274,5 +271,5 @@ void main()
     cell = next / FACES;
     entryFace = next - FACES * cell;
   }
-  finishPeel(before, color, reached, extreme, met);
+  finishPeel(before, color, reached, projection);
 }

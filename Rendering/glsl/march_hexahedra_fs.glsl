@@ -48,7 +48,11 @@ const int FACE[24] =
 
 //PPIRay::HexahedronField::Impl
 
+//PPIRay::GaussLegendre::Impl
+
 //PPIRay::Hexahedron::Impl
+
+//PPIRay::ProjectionCubic::Impl
 
 // One cell's stretch of the ray, x in [0, len] past the entry point: the
 // cubic w split at its extrema into monotonic pieces, each split at the
@@ -211,10 +215,8 @@ void main()
   vec3 origin, direction;
   pixelRay(ndc, origin, direction);
 
-  // A projection's extreme so far (earlier peels).
-  float extreme;
-  bool met;
-  previousExtreme(pixel, extreme, met);
+  // A projection's state so far (earlier peels).
+  vec3 projection = previousProjection(pixel);
 
   // Opaque geometry stops the ray at its depth; clipping planes keep
   // [tKept, tStop] of it.
@@ -337,15 +339,7 @@ void main()
           }
           else
           {
-            // The cubic's extremes: its ends and the roots of its derivative.
-            float roots[2];
-            int extrema = cubicExtrema(w, tEnd - tFrom, roots);
-            meetScalar(cubicValue(w, 0.0), extreme, met);
-            meetScalar(cubicValue(w, tEnd - tFrom), extreme, met);
-            for (int i = 0; i < extrema; ++i)
-            {
-              meetScalar(cubicValue(w, roots[i]), extreme, met);
-            }
+            projectCubicStretch(w, tEnd - tFrom, k, projection);
           }
         }
       }
@@ -393,5 +387,5 @@ void main()
     loadCorners(cell, p);
     mask = texelFetch(hexNeighbors, NEIGHBOR_TEXELS * cell + 1).z;
   }
-  finishPeel(before, color, reached, extreme, met);
+  finishPeel(before, color, reached, projection);
 }

@@ -31,11 +31,25 @@ NEW_VALUES = {
     "PreIntegrationTableSize": (32, 32, "GetPreIntegrationTableSize"),
     "TerminationOpacity": (0.95, 0.95, "GetTerminationOpacity"),
     "PPIRayBlendMode": ("Isosurfaces", 5, "GetBlendMode"),
+    "PPIRayAverageIPScalarRange": ([10.0, 20.0], [10.0, 20.0], "GetAverageIPScalarRange"),
     # Repeatable, no default; kept in the volume property (rendering checked
     # by TestPPIRayRepresentation).
     "PPIRayIsosurfaceValues": ([100.0, 150.0], None, None),
     "Shade": (1, None, None),
 }
+
+
+def numbers(value):
+    """A property value, an XML default string or a getter's result as a list of floats."""
+    if isinstance(value, str):
+        return [float(x) for x in value.split()]
+    return [float(x) for x in value] if hasattr(value, "__len__") else [float(value)]
+
+
+def same(a, b):
+    """Equal within float precision (defaults such as VTK_FLOAT_MAX pass through float)."""
+    a, b = numbers(a), numbers(b)
+    return len(a) == len(b) and all(abs(x - y) <= 1e-6 * max(1.0, abs(x)) for x, y in zip(a, b))
 
 
 def declared_properties(xml_path):
@@ -89,16 +103,17 @@ def main(plugin, xml_path):
                 failures.append("%s = %r not kept" % (name, value))
             continue
         mapper_default = getattr(mapper, getter)()
-        if abs(float(default) - float(mapper_default)) > 1e-12:
+        if not same(default, mapper_default):
             failures.append("%s: XML default %s, mapper default %s" % (name, default, mapper_default))
         display.SetPropertyWithName(name, value)
         Render(view)
         got = getattr(mapper, getter)()
-        if abs(got - expected) > 1e-9:
+        if not same(got, expected):
             failures.append("%s = %r reached the mapper as %r" % (name, value, got))
     # Every blend mode entry: the mapper's blend mode (vtkVolumeMapper's values).
     for text, blend in (("Composite", 0), ("Maximum Intensity", 1), ("Minimum Intensity", 2),
-                        ("Isosurfaces", 5), ("Composite With Isosurfaces", 0)):
+                        ("Average Intensity", 3), ("Additive", 4), ("Isosurfaces", 5),
+                        ("Composite With Isosurfaces", 0)):
         display.PPIRayBlendMode = text
         Render(view)
         if mapper.GetBlendMode() != blend:
