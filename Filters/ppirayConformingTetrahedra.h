@@ -41,7 +41,10 @@
 
 namespace ppiray
 {
-/** visit(cellId, cellType, npts, pts) for every cell of `grid`, in order. */
+/**
+ * visit(cellId, cellType, npts, pts) for every cell of `grid`, in order;
+ * empty cells (VTK_EMPTY_CELL: nothing to draw) are passed over.
+ */
 template<typename Visit>
 void ForEachCell(vtkUnstructuredGrid* grid, Visit&& visit)
 {
@@ -57,7 +60,11 @@ void ForEachCell(vtkUnstructuredGrid* grid, Visit&& visit)
     vtkIdType npts;
     const vtkIdType* pts;
     iter->GetCurrentCell(npts, pts);
-    visit(cellId, grid->GetCellType(cellId), npts, pts);
+    const int type = grid->GetCellType(cellId);
+    if (type != VTK_EMPTY_CELL)
+    {
+      visit(cellId, type, npts, pts);
+    }
   }
 }
 

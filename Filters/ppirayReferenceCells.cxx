@@ -68,7 +68,7 @@ ReferenceCells CollectCells(vtkUnstructuredGrid* grid)
       }
       if (type != VTK_HEXAHEDRON && type != VTK_VOXEL && type != VTK_WEDGE && type != VTK_PYRAMID)
       {
-        ++cells.Skipped;
+        cells.Skipped += type != VTK_EMPTY_CELL ? 1 : 0; // an empty cell holds nothing
         continue;
       }
       vtkIdType npts;

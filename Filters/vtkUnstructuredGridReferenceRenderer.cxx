@@ -6,6 +6,7 @@
 #include "ppirayRaySegments.h"
 #include "ppirayReferenceCells.h"
 #include "ppirayReferenceTransferFunction.h"
+#include "ppirayValidPointIds.h"
 #include "ppirayVolumeIntegrals.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
@@ -138,6 +139,15 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
     return 1;
   }
   const bool cellScalars = association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+  vtkIdType invalidCells = 0;
+  const vtkSmartPointer<vtkUnstructuredGrid> validCells =
+    ppiray::EmptyCellsWithInvalidPointIds(input, invalidCells);
+  if (validCells)
+  {
+    vtkErrorMacro(<< invalidCells << " cells list point ids outside [0, "
+                  << input->GetNumberOfPoints() << "): they are not rendered.");
+    input = validCells;
+  }
 
   const ReferenceCells cells = CollectCells(input);
   if (cells.CornerTetrahedra)
@@ -208,6 +218,10 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
 #pragma omp parallel for schedule(dynamic)
   for (int tile = 0; tile < numberOfTiles; ++tile)
   {
+    if (this->GetAbortExecute())
+    {
+      continue; // aborted (e.g. by a progress observer): no tile is started
+    }
     const int tx = tile % tilesX, ty = tile / tilesX;
     long long unresolved = 0;
     std::vector<Tetrahedron> local;

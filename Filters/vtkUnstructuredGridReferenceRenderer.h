@@ -46,7 +46,12 @@
  * Work per ray is bounded: a piece of a general cell is split at most 24
  * times; pieces accepted there without meeting QuadratureTolerance are
  * counted and reported in one warning. Progress events per finished tile
- * (from the calling thread).
+ * (from the calling thread); SetAbortExecute(1) (from a progress observer,
+ * say) starts no further tile: the image is unfinished (tiles left
+ * transparent) and GetAbortExecute() stays 1 until the next update.
+ *
+ * Cells listing point ids outside the grid's points are reported in one
+ * error and not rendered (ppirayValidPointIds.h), as by the mapper.
  *
  * Scalars: SetInputArrayToProcess(0, 0, 0, association, name); default the
  * active point scalars, else the active cell scalars; first component.

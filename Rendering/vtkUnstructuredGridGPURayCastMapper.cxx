@@ -26,6 +26,8 @@
 #include "vtkVolumeCollection.h"
 #include "vtkVolumeProperty.h"
 
+#include "ppirayValidPointIds.h"
+
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
@@ -54,7 +56,8 @@ public:
   vtkTimeStamp CellsTime;
   bool CellsForHexahedra = false; // built with a hexahedron mode other than SUBDIVIDE
   bool CellsValid = false;
-  vtkNew<vtkUnstructuredGrid> InputCopy; // when the input is not a vtkUnstructuredGrid
+  vtkNew<vtkUnstructuredGrid> InputCopy;           // when the input is not a vtkUnstructuredGrid
+  vtkSmartPointer<vtkUnstructuredGrid> ValidCells; // the input with cells of invalid ids emptied
 
   vtkPPIRayScalarField Field;
   vtkPPIRayTransferFunctionTexture TransferFunction;
@@ -311,6 +314,14 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateCells(
   {
     vtkErrorMacro("The input has infinite or NaN point coordinates; nothing is rendered.");
     return false;
+  }
+  vtkIdType invalidCells = 0;
+  in.ValidCells = ppiray::EmptyCellsWithInvalidPointIds(grid, invalidCells);
+  if (in.ValidCells)
+  {
+    vtkErrorMacro(<< invalidCells << " cells list point ids outside [0, "
+                  << grid->GetNumberOfPoints() << "): they are not rendered.");
+    grid = in.ValidCells;
   }
   // Hexahedra without subdivision when the mesh is for them, else tetrahedra.
   using Result = vtkPPIRayCellBuffers::BuildResult;

@@ -17,7 +17,8 @@
  * magnitude or one component (SetVectorMode, as vtkSmartVolumeMapper).
  * Transfer functions are rendered as VTK's volume mappers evaluate them
  * (vtkTransferFunctionControlPoints); infinite scalars or coordinates are
- * rejected with an error.
+ * rejected with an error; cells listing point ids outside the points are
+ * reported in one error and not rendered, the others are.
  * Opaque geometry already in the depth buffer stops the rays. A camera
  * inside the mesh: rays start at the near plane in the cell they are in.
  * Clipping planes (vtkAbstractMapper::AddClippingPlane, at most 6; each keeps

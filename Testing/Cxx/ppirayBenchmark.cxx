@@ -5,11 +5,13 @@
 // per second, GPU bytes per tetrahedron, and the speed-up of PPIRay.
 //
 //   ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]
-//                   [--views N] [--peer-views N]
+//                   [--views N] [--peer-views N] [--inside]
 //                   [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]
 //
 // Default scene: vtkRTAnalyticSource over [-32, 32]^3 split into 1.31 M
-// tetrahedra (vtkDataSetTriangleFilter), 512x512, 8 views.
+// tetrahedra (vtkDataSetTriangleFilter), 512x512, 8 views. --inside: the
+// camera at the mesh's centre (a 60 degree view turning about itself, the
+// near plane inside the mesh: PPIRay's rays start in the cells it cuts).
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -31,6 +33,10 @@
 #include "vtkVolumeProperty.h"
 #include "vtkXMLUnstructuredGridReader.h"
 
+#include "ppirayPlaneSection.h"
+
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -50,6 +56,7 @@ struct Options
   int Views = 8;
   int PeerViews = 2;
   std::string Mappers = "ppiray,pt,raycast";
+  bool Inside = false;
 };
 
 struct Row
@@ -112,8 +119,19 @@ Row Measure(const std::string& name, vtkUnstructuredGridVolumeMapper* mapper,
   window->SetMultiSamples(0);
   window->SetSize(o.Width, o.Height);
   window->AddRenderer(renderer);
-  renderer->GetActiveCamera()->SetPosition(1.0, 0.6, 1.4);
-  renderer->ResetCamera();
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (o.Inside)
+  {
+    const double centre[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
+    camera->SetPosition(centre);
+    camera->SetFocalPoint(centre[0] + 1.0, centre[1] + 0.3, centre[2] + 0.2);
+    camera->SetViewAngle(60.0);
+  }
+  else
+  {
+    camera->SetPosition(1.0, 0.6, 1.4);
+    renderer->ResetCamera();
+  }
 
   window->Render(); // warm-up: uploads, shader compilation, sorting structures
   window->WaitForCompletion();
@@ -121,7 +139,14 @@ Row Measure(const std::string& name, vtkUnstructuredGridVolumeMapper* mapper,
   vtkNew<vtkTimerLog> timer;
   for (int v = 0; v < views; ++v)
   {
-    renderer->GetActiveCamera()->Azimuth(360.0 / views);
+    if (o.Inside)
+    {
+      camera->Yaw(360.0 / views);
+    }
+    else
+    {
+      camera->Azimuth(360.0 / views);
+    }
     timer->StartTimer();
     window->Render();
     window->WaitForCompletion();
@@ -168,6 +193,10 @@ int main(int argc, char* argv[])
     {
       o.PeerViews = std::stoi(next());
     }
+    else if (arg == "--inside")
+    {
+      o.Inside = true;
+    }
     else if (arg == "--mappers")
     {
       o.Mappers = next();
@@ -176,8 +205,23 @@ int main(int argc, char* argv[])
     {
       std::cout
         << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]"
-           " [--views N] [--peer-views N]"
-           " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]\n";
+           " [--views N] [--peer-views N] [--inside]"
+           " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]\n\n"
+           "Frame time of PPIRay against VTK's unstructured volume mappers on one scene, same\n"
+           "run: median ms per frame over an orbit of views after a warm-up frame.\n"
+           "  --file MESH.vtu     a tetrahedral mesh and its point scalars (default: the wavelet)\n"
+           "  --wavelet N         vtkRTAnalyticSource over [-N, N]^3 split into tetrahedra\n"
+           "                      (default 32: 1.31 M tetrahedra)\n"
+           "  --size WxH          window size (default 512x512)\n"
+           "  --views N           views on the orbit for PPIRay and PT (default 8)\n"
+           "  --peer-views N      views for the CPU mappers raycast, zsweep (default 2)\n"
+           "  --inside            camera at the mesh's centre, turning about itself (default "
+           "outside)\n"
+           "  --mappers LIST      comma-separated (default ppiray,pt,raycast): ppiray (partial\n"
+           "                      pre-integration), ppiray-exact, ppiray-full, ppiray-average,\n"
+           "                      pt (vtkProjectedTetrahedraMapper), raycast\n"
+           "                      (vtkUnstructuredGridVolumeRayCastMapper), zsweep\n"
+           "                      (vtkUnstructuredGridVolumeZSweepMapper)\n";
       return arg == "--help" ? 0 : 2;
     }
   }
@@ -188,7 +232,8 @@ int main(int argc, char* argv[])
             << (o.File.empty() ? "wavelet [-" + std::to_string(o.Wavelet) + ", " +
                                    std::to_string(o.Wavelet) + "]^3 tetrahedralized"
                                : o.File)
-            << ", " << grid->GetNumberOfCells() << " cells, " << o.Width << "x" << o.Height << "\n";
+            << ", " << grid->GetNumberOfCells() << " cells, " << o.Width << "x" << o.Height
+            << (o.Inside ? ", camera inside" : "") << "\n";
 
   std::vector<Row> rows;
   std::stringstream list(o.Mappers);
@@ -232,6 +277,42 @@ int main(int argc, char* argv[])
       m->AutoAdjustSampleDistancesOff();
       rows.push_back(Measure("vtkUnstructuredGridVolumeZSweepMapper", m, grid, o, o.PeerViews));
     }
+  }
+
+  if (o.Inside)
+  {
+    // The CPU part of starting rays inside: the cells cut by the near plane
+    // as polygons (what the mapper computes per frame, timed alone here for a
+    // plane through the centre).
+    double b[6];
+    grid->GetBounds(b);
+    const glm::dvec3 centre(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]));
+    const glm::dvec3 n = glm::normalize(glm::dvec3(1.0, 0.3, 0.2));
+    const glm::dvec4 plane(n, glm::dot(n, centre));
+    // Corners in one array first, as the mapper keeps them (not timed).
+    std::vector<glm::dvec3> corners;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+    {
+      const vtkIdType* ids;
+      vtkIdType size;
+      grid->GetCellPoints(c, size, ids);
+      for (int v = 0; v < 4 && size == 4; ++v)
+      {
+        corners.emplace_back();
+        grid->GetPoint(ids[v], &corners.back().x);
+      }
+    }
+    std::vector<glm::dvec3> triangles;
+    vtkNew<vtkTimerLog> timer;
+    timer->StartTimer();
+    for (size_t t = 0; t + 3 < corners.size(); t += 4)
+    {
+      ppiray::TetrahedronSection(&corners[t], plane, triangles);
+    }
+    timer->StopTimer();
+    std::printf("near-plane section through the centre (ppiray::TetrahedronSection, every cell): "
+                "%.1f ms, %zu triangles\n",
+      1000.0 * timer->GetElapsedTime(), triangles.size() / 3);
   }
 
   double ours = 0;

@@ -1,12 +1,17 @@
 """Module/run demo as a user meets it: the bundled mesh (default comparison:
 all), the can's hexahedra (a user file: no comparison, the first field that
-is not an id: cell EQPS, rendered natively), a mesh of triangles only (exit
-1, "no 3D cells"), a missing file and an unknown array (exit 1, a message,
-no speed-up printed). Skips (125) the can when the data root is absent.
+is not an id: cell EQPS, rendered natively; with --hexahedra subdivide:
+split), a mesh of triangles only (exit 1, "no 3D cells"), a missing file,
+an unknown array and an unknown colour map (exit 1, a message, no speed-up
+printed); the options (a ParaView preset, opacity points, a view, a
+projection, a WxH size) against the reference (p99 at most 1/255); a
+comparison past its --budget stops without an error figure. Skips (125) the
+can when the data root is absent.
 
 Run: TestDemo.py DATA_ROOT SCRATCH_DIR
 """
 import os
+import re
 import subprocess
 import sys
 
@@ -41,6 +46,22 @@ def main(data, scratch):
                 or "hexahedra natively" not in run.stdout or "faster" in run.stdout):
             failures.append("can.vtu: cell EQPS, native hexahedra and no comparison expected")
 
+    run = demo("--out", os.path.join(scratch, "options.png"), "--size", "120x90",
+               "--colormap", "Viridis (matplotlib)", "--opacity", "0:0,0.5:0.1,1:0.8",
+               "--view", "40,15", "--blend", "maximum", "--compare", "reference")
+    error = re.search(r"reference .*p99 ([0-9.]+)", run.stdout)
+    if (run.returncode != 0 or "Viridis (matplotlib), opacity 0:0 0.5:0.1 1:0.8" not in run.stdout
+            or "at 120x90" not in run.stdout or not error or float(error.group(1)) > 1.0):
+        failures.append("options: exit 0, the preset, opacity and size echoed, p99 <= 1 expected")
+    run = demo("--out", os.path.join(scratch, "budget.png"), "--compare", "all", "--budget", "0")
+    if (run.returncode != 0 or "reference stopped" not in run.stdout
+            or "error     vs" in run.stdout or "faster" in run.stdout):
+        failures.append("--budget 0: both comparisons stopped, no error or speed-up printed")
+    if not skipped:
+        run = demo(can, "--out", os.path.join(scratch, "can_split.png"), "--hexahedra", "subdivide")
+        if run.returncode != 0 or "tetrahedra (cells split)" not in run.stdout:
+            failures.append("can.vtu --hexahedra subdivide: split tetrahedra expected")
+
     sphere = vtkSphereSource()
     append = vtkAppendFilter()
     append.AddInputConnection(sphere.GetOutputPort())
@@ -51,7 +72,8 @@ def main(data, scratch):
     writer.Write()
     for args, message in (((triangles,), "no 3D cells"),
                           ((os.path.join(scratch, "missing.vtu"),), "no such file"),
-                          (("--array", "nothing"), "no point or cell array named nothing")):
+                          (("--array", "nothing"), "no point or cell array named nothing"),
+                          (("--colormap", "nothing"), "no colour map named 'nothing'")):
         run = demo(*args)
         if run.returncode == 0 or message not in run.stderr or "faster" in run.stdout:
             failures.append("%s: exit 1 with '%s' expected" % (" ".join(args), message))

@@ -11,6 +11,9 @@ from vtkmodules.vtkIOExodus import vtkExodusIIReader
 from vtkmodules.vtkIOImage import vtkImageReader, vtkSLCReader
 from vtkmodules.vtkIOLegacy import vtkDataSetReader
 from vtkmodules.vtkIOParallel import vtkMultiBlockPLOT3DReader
+# Files written by Exodus pipelines carry vtkExodusIIReader's information keys:
+# its module defines them (else each one is a "Could not locate key" warning).
+import vtkmodules.vtkIOExodus  # noqa: F401,E402
 from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLUnstructuredGridReader
 
 from ppiray_readers import merged

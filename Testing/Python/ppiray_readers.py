@@ -1,7 +1,8 @@
 """Reading what users bring for volumes, as one vtkUnstructuredGrid: XML
 (.vtu .vts .vtr .vti .vtm .pvtu .pvd), legacy .vtk, Exodus (.e .ex2 .exo
-.exii), PLOT3D (an xyz file with --q); composite data merged (structured
-cells as hexahedra or voxels). read() raises ReadError with a message a user
+.exii), PLOT3D (an xyz file with --q), SLC (.slc), raw bricks (with their
+dimensions and type, as ParaView's Image Reader asks); composite data merged
+(structured cells as hexahedra or voxels). read() raises ReadError with a message a user
 can act on.
 """
 import os
@@ -9,6 +10,7 @@ import os
 from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet
 from vtkmodules.vtkFiltersCore import vtkAppendFilter
 from vtkmodules.vtkIOExodus import vtkExodusIIReader
+from vtkmodules.vtkIOImage import vtkImageReader2, vtkSLCReader
 from vtkmodules.vtkIOLegacy import vtkDataSetReader
 from vtkmodules.vtkIOParallel import vtkMultiBlockPLOT3DReader
 from vtkmodules.vtkIOXML import vtkXMLGenericDataObjectReader
@@ -48,14 +50,53 @@ def pvd_file(path, step):
     return os.path.join(os.path.dirname(path), entries[step].get("file"))
 
 
-def read(path, q=None, time_step=0):
-    """The cells of `path` as a vtkUnstructuredGrid, with every array."""
+# Raw brick value types: vtkImageReader2's setter.
+RAW_TYPES = {"uint8": "SetDataScalarTypeToUnsignedChar", "int8": "SetDataScalarTypeToChar",
+             "uint16": "SetDataScalarTypeToUnsignedShort", "int16": "SetDataScalarTypeToShort",
+             "int32": "SetDataScalarTypeToInt", "float32": "SetDataScalarTypeToFloat",
+             "float64": "SetDataScalarTypeToDouble"}
+
+
+def raw_reader(path, raw):
+    """A raw brick, `raw` = 'NXxNYxNZ[:TYPE]' (TYPE one of RAW_TYPES, default
+    uint8; little-endian, x fastest), spacing 1."""
+    dims, _, kind = raw.partition(":")
+    try:
+        n = [int(x) for x in dims.lower().split("x")]
+    except ValueError:
+        n = []
+    kind = kind or "uint8"
+    if len(n) != 3 or min(n) < 2 or kind not in RAW_TYPES:
+        raise ReadError("--raw NXxNYxNZ[:TYPE] expected (TYPE: %s), not %r"
+                        % (" ".join(RAW_TYPES), raw))
+    reader = vtkImageReader2()
+    reader.SetFileDimensionality(3)
+    reader.SetDataExtent(0, n[0] - 1, 0, n[1] - 1, 0, n[2] - 1)
+    getattr(reader, RAW_TYPES[kind])()
+    reader.SetDataByteOrderToLittleEndian()
+    size = n[0] * n[1] * n[2] * {"uint8": 1, "int8": 1, "uint16": 2, "int16": 2}.get(
+        kind, 8 if kind == "float64" else 4)
+    if os.path.getsize(path) < size:
+        raise ReadError("%s has %d bytes; --raw %s needs %d" % (path, os.path.getsize(path), raw,
+                                                                size))
+    return reader
+
+
+def read(path, q=None, time_step=0, raw=None, function=None):
+    """The cells of `path` as a vtkUnstructuredGrid, with every array
+    (PLOT3D: and the derived `function`, vtkMultiBlockPLOT3DReader's number)."""
     if not os.path.isfile(path):
         raise ReadError("no such file: %s" % path)
     ext = os.path.splitext(path)[1].lower()
     if ext == ".pvd":
         return read(pvd_file(path, time_step))
-    if ext in XML:
+    if raw is not None or ext == ".raw":
+        if raw is None:
+            raise ReadError("a raw brick needs its dimensions: --raw NXxNYxNZ[:TYPE]")
+        reader = raw_reader(path, raw)
+    elif ext == ".slc":
+        reader = vtkSLCReader()
+    elif ext in XML:
         reader = vtkXMLGenericDataObjectReader()
     elif ext == ".vtk":
         reader = vtkDataSetReader()
@@ -77,9 +118,11 @@ def read(path, q=None, time_step=0):
         reader.SetXYZFileName(path)
         reader.SetQFileName(q)
         reader.AutoDetectFormatOn()
+        if function is not None:
+            reader.AddFunction(function)
     else:
-        raise ReadError("unknown file type %s (XML %s, legacy .vtk, Exodus %s, .pvd, PLOT3D "
-                        "with --q)" % (ext, " ".join(XML), " ".join(EXODUS)))
+        raise ReadError("unknown file type %s (XML %s, legacy .vtk, Exodus %s, .pvd, .slc, "
+                        "PLOT3D with --q, raw with --raw)" % (ext, " ".join(XML), " ".join(EXODUS)))
     if not isinstance(reader, vtkExodusIIReader) and not isinstance(
             reader, vtkMultiBlockPLOT3DReader):
         reader.SetFileName(path)

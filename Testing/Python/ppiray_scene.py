@@ -2,9 +2,14 @@
 tetrahedral .vtu, a cool-warm colour map and an opacity ramp over the scalar
 range, unit distance 1/20 of the diagonal, a three-quarter view.
 """
+import json
+
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
+# Files written by Exodus pipelines carry vtkExodusIIReader's information keys:
+# its module defines them (else each one is a "Could not locate key" warning).
+import vtkmodules.vtkIOExodus  # noqa: F401,E402
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from vtkmodules.vtkRenderingCore import (
     vtkColorTransferFunction,
@@ -50,27 +55,75 @@ def volume_property(grid):
     return prop
 
 
-def paraview_property(grid, unit_distance=None):
+# ParaView's default colour map, for a VTK without ParaView's presets.
+COOL_TO_WARM = {"Name": "Cool to Warm", "ColorSpace": "Diverging",
+                "RGBPoints": [0, 0.231373, 0.298039, 0.752941, 0.5, 0.865003, 0.865003, 0.865003,
+                              1, 0.705882, 0.0156863, 0.14902]}
+COLOR_SPACES = {"RGB": "SetColorSpaceToRGB", "HSV": "SetColorSpaceToHSV",
+                "Lab": "SetColorSpaceToLab", "Lab/CIEDE2000": "SetColorSpaceToLabCIEDE2000",
+                "Diverging": "SetColorSpaceToDiverging", "Step": "SetColorSpaceToStep"}
+
+
+def colormap_presets():
+    """ParaView's colour map presets (vtkSMTransferFunctionPresets), or None
+    when this VTK comes without ParaView."""
+    try:
+        from paraview.modules.vtkRemotingViews import vtkSMTransferFunctionPresets
+    except ImportError:
+        return None
+    return vtkSMTransferFunctionPresets.GetInstance()
+
+
+def colormap_names():
+    presets = colormap_presets()
+    if presets is None:
+        return [COOL_TO_WARM["Name"]]
+    return [presets.GetPresetName(i) for i in range(presets.GetNumberOfPresets())
+            if "RGBPoints" in json.loads(presets.GetPresetAsString(i))]
+
+
+def colormap(name, lo, hi):
+    """A vtkColorTransferFunction for ParaView's colour map preset `name`
+    over [lo, hi], as ParaView applies one: its points rescaled to the range,
+    in its colour space. KeyError for a name that is not a continuous map."""
+    presets = colormap_presets()
+    names = [] if presets is None else [presets.GetPresetName(i)
+                                        for i in range(presets.GetNumberOfPresets())]
+    if name in names:
+        preset = json.loads(presets.GetPresetAsString(names.index(name)))
+    elif name == COOL_TO_WARM["Name"]:
+        preset = COOL_TO_WARM
+    else:
+        raise KeyError(name)
+    points = preset.get("RGBPoints")
+    if not points:
+        raise KeyError(name)
+    x0, x1 = points[0], points[-4]
+    color = vtkColorTransferFunction()
+    getattr(color, COLOR_SPACES.get(preset.get("ColorSpace", "RGB"), "SetColorSpaceToRGB"))()
+    for i in range(0, len(points), 4):
+        u = (points[i] - x0) / (x1 - x0) if x1 > x0 else 0.0
+        color.AddRGBPoint(lo + u * (hi - lo), *points[i + 1:i + 4])
+    return color
+
+
+def paraview_property(grid, unit_distance=None, colormap_name="Cool to Warm", opacity=None):
     """What ParaView 5.11 shows a new volume with: its Cool to Warm colour map
-    (three points in the Diverging colour space) and opacity ramp 0 to 1 over
-    the active scalars' range, and a unit distance of about one cell (the
-    bounds' diagonal over the cube root of the number of cells, its
-    approximate cell length), unless `unit_distance` is given."""
+    (or the preset `colormap_name`) and opacity ramp 0 to 1 (or `opacity`:
+    (fraction of the range, opacity) pairs) over the active scalars' range,
+    and a unit distance of about one cell (the bounds' diagonal over the cube
+    root of the number of cells, its approximate cell length), unless
+    `unit_distance` is given."""
     scalars = grid.GetPointData().GetScalars() or grid.GetCellData().GetScalars()
     if scalars is None:
         raise SystemExit("no point or cell scalars in the dataset")
     lo, hi = scalars.GetRange()
-    color = vtkColorTransferFunction()
-    color.SetColorSpaceToDiverging()
-    color.AddRGBPoint(lo, 0.231373, 0.298039, 0.752941)
-    color.AddRGBPoint(0.5 * (lo + hi), 0.865003, 0.865003, 0.865003)
-    color.AddRGBPoint(hi, 0.705882, 0.0156863, 0.14902)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(lo, 0.0)
-    opacity.AddPoint(hi, 1.0)
+    ramp = vtkPiecewiseFunction()
+    for u, o in opacity or ((0.0, 0.0), (1.0, 1.0)):
+        ramp.AddPoint(lo + u * (hi - lo), o)
     prop = vtkVolumeProperty()
-    prop.SetColor(color)
-    prop.SetScalarOpacity(opacity)
+    prop.SetColor(colormap(colormap_name, lo, hi))
+    prop.SetScalarOpacity(ramp)
     if unit_distance is None:
         b = grid.GetBounds()
         diagonal = ((b[1] - b[0]) ** 2 + (b[3] - b[2]) ** 2 + (b[5] - b[4]) ** 2) ** 0.5
@@ -80,8 +133,9 @@ def paraview_property(grid, unit_distance=None):
 
 
 def scene(grid, mapper, size, prop=None):
-    """A window of size x size rendering `grid` with `mapper` and `prop`
-    (default volume_property(grid)), from the three-quarter view."""
+    """A window of size x size (or size = (width, height)) rendering `grid`
+    with `mapper` and `prop` (default volume_property(grid)), from the
+    three-quarter view."""
     prop = prop or volume_property(grid)
     b = grid.GetBounds()
     mapper.SetInputData(grid)
@@ -99,7 +153,7 @@ def scene(grid, mapper, size, prop=None):
     renderer.ResetCamera()
     window = vtkRenderWindow()
     window.SetMultiSamples(0)
-    window.SetSize(size, size)
+    window.SetSize(*(size if isinstance(size, (tuple, list)) else (size, size)))
     window.AddRenderer(renderer)
     return window, renderer
 

@@ -136,11 +136,13 @@ def read_rgb(path):
     return ppiray_baseline.read_rgb(path)
 
 
-def against_reference(view, display, image_path, array, background=(0.32, 0.34, 0.43)):
+def against_reference(view, display, image_path, array, background=(0.32, 0.34, 0.43),
+                      blend=0):
     """The screenshot at `image_path` against the CPU reference renderer given
     ParaView's own lookup table and opacity function objects (evaluated by
     VTK, vtkColorTransferFunction::GetTable), composited over the view's
     background as the window does: C + (1 - alpha) background, 8 bits.
+    `blend`: the reference's blend mode (vtkVolumeMapper's values).
     Returns (covered pixels, p99, max) in 1/255 units over the covered pixels."""
     import numpy as np
     import ppiray
@@ -163,6 +165,8 @@ def against_reference(view, display, image_path, array, background=(0.32, 0.34, 
     reference.SetVolumeProperty(prop)
     reference.SetCamera(view.GetClientSideObject().GetActiveCamera())
     reference.SetImageSize(width, height)
+    reference.SetBlendMode(blend)
+    reference.SetAverageIPScalarRange(mapper.GetAverageIPScalarRange())
     reference.Update()
     rgba = vtk_to_numpy(reference.GetOutput().GetPointData().GetScalars()).reshape(height, width, 4)
     bg = np.round(255.0 * np.array(background))

@@ -6,13 +6,18 @@
 // cells (warning; rendered through their corners) and a zero-volume
 // tetrahedron (warning; skipped), infinite scalars or coordinates (error,
 // nothing drawn), a 3-component array (magnitude by default; a component
-// out of range: warning, the last one).
+// out of range: warning, the last one), cells with point ids out of range
+// (one error with their count; the other cells render as without them, in
+// the mapper and in the reference renderer).
 
 #include "PPIRayImageCompare.h"
 #include "PPIRayTestScenes.h"
+#include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkPointData.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
+#include "vtkUnstructuredGridReferenceRenderer.h"
 
 #include <cmath>
 #include <functional>
@@ -128,6 +133,91 @@ int TestGPURayCastBadInput(int, char*[])
   std::cout << "pentagonal prism: " << h.Errors << "\n";
   errors += Expect(h.Errors.find("1 vtkPentagonalPrism") != std::string::npos && Lit(h.Image) == 0,
     "unsupported cells only: error naming type and count, nothing drawn");
+
+  // Point ids out of range (negative, past the last point) in two cells
+  // among good ones (point and cell scalars): one error with the count, the
+  // good cells render as they would alone; the reference renderer the same.
+  for (const bool cellData : { false, true })
+  {
+    vtkNew<vtkUnstructuredGrid> clean, bad;
+    clean->DeepCopy(good);
+    if (cellData)
+    {
+      vtkNew<vtkDoubleArray> values;
+      values->SetName("c");
+      for (vtkIdType c = 0; c < clean->GetNumberOfCells(); ++c)
+      {
+        values->InsertNextValue(0.2 + 0.9 * (c % 7) / 7.0);
+      }
+      clean->GetCellData()->SetScalars(values);
+      clean->GetPointData()->SetScalars(nullptr);
+    }
+    bad->DeepCopy(clean);
+    const vtkIdType n = bad->GetNumberOfPoints();
+    const vtkIdType negative[4] = { 0, 1, -3, 2 }, past[4] = { 0, 1, 2, n + 5 };
+    // The bad cells first: every good cell's id moves by two.
+    vtkNew<vtkUnstructuredGrid> shifted;
+    shifted->SetPoints(bad->GetPoints());
+    shifted->GetPointData()->ShallowCopy(bad->GetPointData());
+    shifted->InsertNextCell(VTK_TETRA, 4, negative);
+    shifted->InsertNextCell(VTK_TETRA, 4, past);
+    for (vtkIdType c = 0; c < bad->GetNumberOfCells(); ++c)
+    {
+      vtkIdType npts;
+      const vtkIdType* pts;
+      bad->GetCellPoints(c, npts, pts);
+      shifted->InsertNextCell(bad->GetCellType(c), npts, pts);
+    }
+    if (cellData)
+    {
+      vtkNew<vtkDoubleArray> values;
+      values->SetName("c");
+      values->InsertNextValue(5.0);
+      values->InsertNextValue(5.0);
+      for (vtkIdType c = 0; c < clean->GetNumberOfCells(); ++c)
+      {
+        values->InsertNextValue(clean->GetCellData()->GetScalars()->GetTuple1(c));
+      }
+      shifted->GetCellData()->SetScalars(values);
+    }
+    const Outcome alone = RenderGrid(clean);
+    const Outcome withBad = RenderGrid(shifted);
+    const auto diff = ppiray_test::Compare(alone.Image, withBad.Image);
+    std::cout << "ids out of range (" << (cellData ? "cell" : "point")
+              << " scalars): " << withBad.Errors << "max " << diff.Max << "\n";
+    errors += Expect(withBad.Errors.find("2 cells list point ids outside [0, " + std::to_string(n) +
+                                         ")") != std::string::npos &&
+                       diff.Max <= 1 && Lit(withBad.Image) > 1000,
+      "ids out of range: one error with the count, the other cells render as alone");
+    vtkNew<ppiray_test::MessageCollector> referenceMessages;
+    vtkNew<vtkUnstructuredGridReferenceRenderer> reference;
+    reference->AddObserver(vtkCommand::ErrorEvent, referenceMessages);
+    vtkNew<vtkCamera> camera;
+    camera->SetPosition(0.5, 0.5, 3.0);
+    camera->SetFocalPoint(0.5, 0.5, 0.5);
+    camera->SetClippingRange(0.5, 5.0);
+    camera->SetViewAngle(40);
+    vtkNew<vtkVolumeProperty> property;
+    ppiray_test::SmoothTransferFunction(property, 0.0, 1.3, 0.8, 0.2);
+    reference->SetCamera(camera);
+    reference->SetVolumeProperty(property);
+    reference->SetImageSize(64, 64);
+    double sums[2] = { 0, 0 };
+    for (int k = 0; k < 2; ++k)
+    {
+      reference->SetInputData(k == 0 ? clean.Get() : shifted.Get());
+      reference->Update();
+      vtkDataArray* rgba = reference->GetOutput()->GetPointData()->GetScalars();
+      for (vtkIdType p = 0; p < rgba->GetNumberOfTuples(); ++p)
+      {
+        sums[k] += rgba->GetComponent(p, 3);
+      }
+    }
+    errors += Expect(
+      referenceMessages->Errors.find("2 cells list point ids outside") != std::string::npos &&
+        sums[0] > 10 && std::abs(sums[0] - sums[1]) < 1e-9 * sums[0],
+      "ids out of range: the reference renderer reports them and renders the other cells");
+  }
 
   // Tetrahedra plus one triangle (a 2D cell): error, the tetrahedra still render.
   vtkNew<vtkUnstructuredGrid> mixed;

@@ -372,7 +372,7 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
     {
       errors += Fail("20 isovalues: expected a warning and the lowest 16 drawn");
     }
-    mapper->SetBlendMode(3); // vtkVolumeMapper::AVERAGE_INTENSITY_BLEND: not drawn
+    mapper->SetBlendMode(6); // vtkVolumeMapper::SLICE_BLEND: not drawn
     scene.Window->Render();
     if (messages->Warnings.find("not supported") == std::string::npos)
     {

@@ -4,7 +4,8 @@
 // PPIRay volumes in one renderer (each composited whole over what was
 // rendered before it: a documented limit, reported once by a warning; a
 // second prop with the same mapper, as ParaView's LOD volume wraps one, is
-// not reported).
+// not reported); onscreen and offscreen rendering switched between frames,
+// and the window closed and reopened (a new OpenGL context).
 //
 // Every image against the reference renderer at its viewport's size: every
 // covered pixel, p99 and max at most 1/255 (8-bit rounding 0.5, float, the
@@ -149,6 +150,39 @@ int TestGPURayCastWindows(int, char*[])
     if (messages->Warnings.find("overlap") != std::string::npos)
     {
       std::cout << "FAILED: a volume sharing this mapper is reported as overlapping\n";
+      ++errors;
+    }
+  }
+  // 5. Onscreen, offscreen, onscreen again, then the window closed and
+  // reopened (its context and every GL object released, a new context
+  // made): each frame as the reference, no stale target or program.
+  {
+    ppiray_test::Scene scene(120, 110);
+    ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    vtkNew<ppiray_test::MessageCollector> messages;
+    mapper->AddObserver(vtkCommand::WarningEvent, messages);
+    mapper->AddObserver(vtkCommand::ErrorEvent, messages);
+    scene.Show(mapper, grid, { 2.5, -1.5, 1.8 }, { 0.5, 0.5, 0.5 });
+    auto check = [&](const char* what)
+    {
+      scene.Window->Render();
+      errors += Expect(what,
+        ppiray_test::CheckPixels(
+          scene.Renderer, grid, scene.Property, ppiray_test::ReadRGB(scene.Window), 120, 110),
+        2000);
+    };
+    check("onscreen");
+    scene.Window->SetOffScreenRendering(1);
+    check("offscreen");
+    scene.Window->SetOffScreenRendering(0);
+    check("onscreen again");
+    scene.Window->Finalize();
+    check("closed and reopened");
+    if (!messages->Warnings.empty() || !messages->Errors.empty())
+    {
+      std::cout << "FAILED: messages switching windows: [" << messages->Warnings << messages->Errors
+                << "]\n";
       ++errors;
     }
   }

@@ -1,0 +1,71 @@
+#include "ppirayValidPointIds.h"
+
+#include "ppirayConformingTetrahedra.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellType.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <vector>
+
+namespace ppiray
+{
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnstructuredGrid> EmptyCellsWithInvalidPointIds(
+  vtkUnstructuredGrid* grid, vtkIdType& invalidCells)
+{
+  invalidCells = 0;
+  vtkCellArray* cells = grid ? grid->GetCells() : nullptr;
+  if (!cells)
+  {
+    return nullptr;
+  }
+  const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
+  std::vector<bool> invalid(grid->GetNumberOfCells(), false);
+  ForEachCell(grid,
+    [&](vtkIdType cellId, int, vtkIdType npts, const vtkIdType* pts)
+    {
+      for (vtkIdType i = 0; i < npts && !invalid[cellId]; ++i)
+      {
+        invalid[cellId] = pts[i] < 0 || pts[i] >= numberOfPoints;
+      }
+      invalidCells += invalid[cellId] ? 1 : 0;
+    });
+  if (invalidCells == 0)
+  {
+    return nullptr;
+  }
+  vtkNew<vtkCellArray> kept;
+  vtkNew<vtkUnsignedCharArray> types;
+  types->SetNumberOfValues(grid->GetNumberOfCells());
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    grid->GetCellPoints(c, npts, pts);
+    kept->InsertNextCell(invalid[c] ? 0 : npts, pts);
+    types->SetValue(c, invalid[c] ? VTK_EMPTY_CELL : grid->GetCellType(c));
+  }
+  // Polyhedra keep their faces; an emptied one has none.
+  vtkSmartPointer<vtkIdTypeArray> faceLocations;
+  if (grid->GetFaceLocations())
+  {
+    faceLocations = vtkSmartPointer<vtkIdTypeArray>::New();
+    faceLocations->DeepCopy(grid->GetFaceLocations());
+    for (vtkIdType c = 0; c < static_cast<vtkIdType>(invalid.size()); ++c)
+    {
+      if (invalid[c] && c < faceLocations->GetNumberOfValues())
+      {
+        faceLocations->SetValue(c, -1);
+      }
+    }
+  }
+  auto valid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  valid->ShallowCopy(grid);
+  valid->SetCells(types, kept, faceLocations, grid->GetFaces());
+  return valid;
+}
+}

@@ -1,0 +1,31 @@
+/**
+ * @file   ppirayValidPointIds.h
+ * @brief  cells whose point ids lie outside the grid's points, made empty
+ *
+ * A cell listing a point id below 0 or at or past the number of points
+ * cannot be drawn (nor read without going out of bounds). The mapper and
+ * the reference renderer render the grid with every such cell turned into
+ * an empty cell (VTK_EMPTY_CELL, no points), which the cell walks skip:
+ * the other cells keep their ids, so cell data still lines up.
+ */
+#ifndef ppirayValidPointIds_h
+#define ppirayValidPointIds_h
+
+#include "ppirayFiltersModule.h" // for export macro
+#include "vtkSmartPointer.h"     // for vtkSmartPointer
+#include "vtkType.h"             // for vtkIdType
+
+class vtkUnstructuredGrid;
+
+namespace ppiray
+{
+/**
+ * nullptr when every point id of every cell of `grid` lies in
+ * [0, number of points); else a copy of `grid` (points, point and cell data
+ * shared) with those cells empty, and their number in `invalidCells`.
+ */
+PPIRAYFILTERS_EXPORT vtkSmartPointer<vtkUnstructuredGrid> EmptyCellsWithInvalidPointIds(
+  vtkUnstructuredGrid* grid, vtkIdType& invalidCells);
+}
+
+#endif
