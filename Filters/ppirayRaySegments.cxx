@@ -226,7 +226,9 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
     return found != -1 && cell->GetParametricDistance(pcoords) <= 1e-9;
   };
   // [a, b] with its midpoint m known: the quarter points decide, and become
-  // the midpoints of the halves.
+  // the midpoints of the halves. At most MaximumSplitDepth levels and
+  // MaximumPiecesPerCell pieces along the ray in this cell.
+  int pieces = 0;
   auto linearize = [&](auto&& self, double a, double sa, double sm, double b, double sb,
                      int depth) -> void
   {
@@ -236,8 +238,10 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
     evaluate(0.5 * (m + b), sq3);
     const double deviation = std::max({ std::abs(sm - 0.5 * (sa + sb)),
       std::abs(sq1 - 0.75 * sa - 0.25 * sb), std::abs(sq3 - 0.25 * sa - 0.75 * sb) });
-    if (depth >= MaximumSplitDepth || !(deviation > tolerance))
+    if (depth >= MaximumSplitDepth || pieces + 2 >= MaximumPiecesPerCell ||
+        !(deviation > tolerance))
     {
+      pieces += 2;
       unresolved += deviation > tolerance ? 1 : 0;
       out.push_back({ a, m, sa, sm, { 0, 0, 0 }, id });
       out.push_back({ m, b, sm, sb, { 0, 0, 0 }, id });

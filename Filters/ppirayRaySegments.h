@@ -71,9 +71,11 @@ int InterpolatedPoints(vtkCell* cell);
 // split until the interpolated scalar is linear along the ray within
 // `tolerance` at its quarter points and midpoint, and every piece is then
 // integrated exactly like a tetrahedron's. `cellId` >= 0 selects cell scalars.
-// A piece is split at most MaximumSplitDepth times; `unresolved` counts the
-// pieces accepted there without meeting the tolerance.
+// A piece is split at most MaximumSplitDepth levels deep, and the ray's
+// stretch in the cell into at most MaximumPiecesPerCell pieces; `unresolved`
+// counts the pieces accepted there without meeting the tolerance.
 constexpr int MaximumSplitDepth = 24;
+constexpr int MaximumPiecesPerCell = 4096;
 void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scalars,
   vtkIdType cellId, const Vec3& origin, const Vec3& direction, const Vec3& centre, double tolerance,
   std::vector<Segment>& out, long long& unresolved);

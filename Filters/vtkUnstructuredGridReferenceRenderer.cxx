@@ -162,8 +162,12 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
   const vtkIdType numberOfTets = cells.NumberOfTetrahedra();
   double scalarRange[2];
   scalars->GetRange(scalarRange, 0);
+  // Relative to the range; for a (nearly) constant field, to the values'
+  // magnitude (the interpolation's own rounding is not a deviation).
   const double linearTolerance =
-    this->QuadratureTolerance * std::max(scalarRange[1] - scalarRange[0], 1e-300);
+    this->QuadratureTolerance *
+    std::max({ scalarRange[1] - scalarRange[0],
+      1e-9 * std::max(std::abs(scalarRange[0]), std::abs(scalarRange[1])), 1e-300 });
 
   TransferFunction tf;
   tf.Build(this->VolumeProperty, this->TransferFunctionTolerance);
@@ -339,7 +343,8 @@ int vtkUnstructuredGridReferenceRenderer::RequestData(
   if (unresolvedPieces > 0)
   {
     vtkWarningMacro(<< unresolvedPieces << " ray pieces in general cells were split "
-                    << MaximumSplitDepth << " times and still not linear within "
+                    << MaximumSplitDepth << " levels deep or into " << MaximumPiecesPerCell
+                    << " pieces and still not linear within "
                     << "QuadratureTolerance: the image may be off by more there.");
   }
   return 1;

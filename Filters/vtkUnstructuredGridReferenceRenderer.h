@@ -44,11 +44,12 @@
  * vtkUnstructuredGridGPURayCastMapper's, evaluated independently.
  *
  * Work per ray is bounded: a piece of a general cell is split at most 24
- * times; pieces accepted there without meeting QuadratureTolerance are
- * counted and reported in one warning. Progress events per finished tile
- * (from the calling thread); SetAbortExecute(1) (from a progress observer,
- * say) starts no further tile: the image is unfinished (tiles left
- * transparent) and GetAbortExecute() stays 1 until the next update.
+ * levels deep and into at most 4,096 pieces per cell (the tolerance of a
+ * constant field is relative to its values); pieces accepted there without
+ * meeting QuadratureTolerance are counted and reported in one warning. Progress events per finished
+ * tile (from the calling thread); SetAbortExecute(1) (from a progress observer, say) starts no
+ * further tile: the image is unfinished (tiles left transparent) and GetAbortExecute() stays 1
+ * until the next update.
  *
  * Cells listing point ids outside the grid's points are reported in one
  * error and not rendered (ppirayValidPointIds.h), as by the mapper.

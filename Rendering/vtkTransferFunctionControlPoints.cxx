@@ -276,6 +276,7 @@ bool vtkTransferFunctionControlPoints::Build(vtkVolumeProperty* property, int co
     vtkWarningMacro("ScalarOpacityUnitDistance " << unitDistance << " is not positive; using 1.");
     unitDistance = 1.0;
   }
+  this->UnitDistance = unitDistance;
   for (const auto& p : points)
   {
     this->Values.push_back(p.first);

@@ -72,6 +72,12 @@ public:
   const std::vector<double>& GetColorAttenuation() const { return this->ColorAttenuation; }
 
   /**
+   * The unit distance tau was divided by: the property's
+   * ScalarOpacityUnitDistance, or 1 where that is not positive (warned).
+   */
+  double GetUnitDistance() const { return this->UnitDistance; }
+
+  /**
    * Whether the last Build() stopped at MaximumNumberOfControlPoints before
    * reaching Tolerance.
    */
@@ -91,6 +97,7 @@ protected:
   double Tolerance = 0.1 / 255.0;
   int MaximumNumberOfControlPoints = 4096;
   bool Truncated = false;
+  double UnitDistance = 1.0;
   std::vector<double> Values;
   std::vector<double> ColorAttenuation;
 

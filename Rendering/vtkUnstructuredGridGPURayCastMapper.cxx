@@ -549,7 +549,7 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
     program->SetUniformi("maximumSteps", maximumSteps);
     program->SetUniformf("terminationAlpha", frame.TerminationAlpha);
     program->SetUniformf("opacityUnitDistance",
-      static_cast<float>(vol->GetProperty()->GetScalarOpacityUnitDistance(0)));
+      static_cast<float>(in.TransferFunction.GetControlPoints()->GetUnitDistance()));
     if (projection >= AVERAGE_INTENSITY_BLEND)
     {
       ProjectionUniforms(program, in.Field, this->AverageIPScalarRange);

@@ -98,10 +98,17 @@ int cubicExtrema(vec4 w, float len, out float roots[2])
 // The x in [lo, hi] where the cubic, monotonic there, takes `target`:
 // Newton's method kept inside a shrinking bracket, bisecting whenever a
 // Newton step would leave it (never leaves [lo, hi]; at most 32 steps).
+// A target the rounded cubic does not bracket (one just crossed at lo,
+// e.g. the second of two equal control points, a jump of the transfer
+// function) is taken at the nearer end.
 float cubicCrossing(vec4 w, float target, float lo, float hi)
 {
   float gLo = cubicValue(w, lo) - target;
   float gHi = cubicValue(w, hi) - target;
+  if (gLo != 0.0 && gHi != 0.0 && (gLo < 0.0) == (gHi < 0.0))
+  {
+    return abs(gLo) <= abs(gHi) ? lo : hi;
+  }
   float x = gHi == gLo ? 0.5 * (lo + hi) : clamp(lo - gLo * (hi - lo) / (gHi - gLo), lo, hi);
   float tolerance = 1.0e-7 * max(hi - lo, 1.0e-30);
   for (int i = 0; i < 32; ++i)

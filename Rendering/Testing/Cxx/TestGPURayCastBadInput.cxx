@@ -8,14 +8,17 @@
 // nothing drawn), a 3-component array (magnitude by default; a component
 // out of range: warning, the last one), cells with point ids out of range
 // (one error with their count; the other cells render as without them, in
-// the mapper and in the reference renderer).
+// the mapper and in the reference renderer), a unit distance of 0 (warning;
+// rendered with 1, in every blend mode).
 
 #include "PPIRayImageCompare.h"
 #include "PPIRayTestScenes.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
+#include "vtkStringOutputWindow.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 #include "vtkUnstructuredGridReferenceRenderer.h"
 
@@ -34,10 +37,11 @@ struct Outcome
 };
 
 Outcome RenderGrid(vtkUnstructuredGrid* grid,
-  const std::function<void(vtkUnstructuredGridGPURayCastMapper*)>& configure = nullptr)
+  const std::function<void(vtkUnstructuredGridGPURayCastMapper*)>& configure = nullptr,
+  double unitDistance = 0.2)
 {
   ppiray_test::Scene scene(100, 100);
-  ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
+  ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, unitDistance);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
   vtkNew<ppiray_test::MessageCollector> observer;
   mapper->AddObserver(vtkCommand::ErrorEvent, observer);
@@ -311,5 +315,29 @@ int TestGPURayCastBadInput(int, char*[])
   errors += Expect(vc.Warnings.find("using 2") != std::string::npos &&
                      ppiray_test::Compare(reference.Image, vc.Image).Max > 10,
     "component out of range: warning, the last component rendered");
+  // ScalarOpacityUnitDistance 0 (found by the fuzz driver: a projection was
+  // coloured with alpha = opacity x 0, nothing drawn): a warning, and every
+  // blend mode renders as with the unit distance 1 it falls back to.
+  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
+  vtkNew<vtkStringOutputWindow> printed; // the warning comes from the transfer function
+  vtkOutputWindow::SetInstance(printed);
+  for (const int blend : { 0, 1, 3 })
+  {
+    auto withUnit = [&](double unit)
+    {
+      return RenderGrid(
+        good, [&](vtkUnstructuredGridGPURayCastMapper* mapper) { mapper->SetBlendMode(blend); },
+        unit);
+    };
+    const Outcome zero = withUnit(0.0), one = withUnit(1.0);
+    const auto d = ppiray_test::Compare(zero.Image, one.Image);
+    std::cout << "unit distance 0, blend mode " << blend << ": max " << d.Max << " against 1, "
+              << Lit(zero.Image) << " lit\n";
+    errors += Expect(printed->GetOutput().find("not positive") != std::string::npos && d.Max == 0 &&
+                       Lit(zero.Image) > 1000,
+      "unit distance 0: a warning, rendered as with unit distance 1");
+  }
+  vtkOutputWindow::SetInstance(previous);
+
   return errors == 0 ? 0 : 1;
 }

@@ -18,7 +18,8 @@
 //     three others, as in UNISIM-II's pinch-outs) under a hexahedron:
 //     natively exactly like their tetrahedra. Two thin cells whose shared face
 //     folds across grazing rays: each stretch charged to the right cell. A
-//     block with a folded (inverted) layer and a linear field: exact.
+//     block with a folded (inverted) layer and a linear field: exact. A
+//     rough field under a Step colour map: each jump crossed in place.
 //  4. Voxels (vtkImageData through vtkAppendFilter) render natively, exactly
 //     like the same cells given as hexahedra; a mixed mesh falls back to
 //     tetrahedra with a warning.
@@ -477,6 +478,45 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     if (mapper->GetNumberOfHexahedra() != 216 || check.P99 > 1.0 || check.MaxDifference > 2.0)
     {
       errors += Fail("a folded layer of hexahedra, against the reference");
+    }
+  }
+
+  // 3d. A rough field (a pseudo-random value per point: cubics along the
+  // rays with several extrema) under a Step colour map (a jump at every
+  // node: control points in equal pairs), composite: every jump crossed at
+  // the right place. Found by the fuzz driver (seed 1, case 16): the second
+  // point of a pair, just crossed, was searched for across the rest of the
+  // monotonic piece and found at its end (p99 25, max 75 there).
+  {
+    auto grid = DistortedBlock(4, 0.0);
+    vtkDataArray* values = grid->GetPointData()->GetScalars();
+    for (vtkIdType p = 0; p < values->GetNumberOfTuples(); ++p)
+    {
+      values->SetTuple1(p, std::fmod(0.618034 * static_cast<double>(p * p % 97), 1.0));
+    }
+    values->Modified();
+    ppiray_test::Scene scene(120, 120);
+    vtkNew<vtkColorTransferFunction> color;
+    color->SetColorSpaceToStep();
+    vtkNew<vtkPiecewiseFunction> opacity;
+    for (int i = 0; i <= 8; ++i)
+    {
+      color->AddRGBPoint(i / 8.0, (i % 3) / 2.0, ((i + 1) % 3) / 2.0, 0.3 + 0.07 * i);
+      opacity->AddPoint(i / 8.0, 0.2 + 0.1 * (i % 4));
+    }
+    scene.Property->SetColor(color);
+    scene.Property->SetScalarOpacity(opacity);
+    scene.Property->SetScalarOpacityUnitDistance(0.3);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    scene.Show(mapper, grid, { 2.2, 1.4, 2.6 }, { 0.5, 0.5, 0.5 });
+    scene.Window->Render();
+    const auto check = ppiray_test::CheckPixels(
+      scene.Renderer, grid, scene.Property, ppiray_test::ReadRGB(scene.Window), 120, 120);
+    std::cout << "rough field, Step colours: against the reference: ";
+    errors += ppiray_test::ExpectCoverage(check, 5000);
+    if (check.P99 > 1.0 || check.MaxDifference > 1.0)
+    {
+      errors += Fail("jumps of the transfer function in a rough hexahedral field");
     }
   }
 
