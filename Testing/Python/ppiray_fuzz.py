@@ -19,9 +19,13 @@ outside, inside and parallel.
 
 Each case must: exit (no crash), finish within the time limit (no hang);
 when its input is malformed in a way that leaves something out, say so in a
-warning or an error (the substring its mutation names); when it is clean and
+warning or an error (the substring its mutation names; a grid with
+non-finite coordinates that VTK culls before the mapper runs draws and says
+nothing); when it is clean,
 the reference applies (linear tetrahedra or unjittered hexahedra rendered
-natively, an exact integration mode), match the CPU reference renderer:
+natively, an exact integration mode) and the mapper announced no
+approximation (a transfer function cut at 4,096 control points), match the
+CPU reference renderer:
 p99 at most 2/255 and at most 1 % of the covered pixels (3 at least) more
 than 8/255 apart (silhouette pixels whose rays graze an edge). Prints one
 line per failure with the command that reruns it, then a summary; exit 1 on
@@ -307,13 +311,23 @@ def render_case(case, window, renderer, messages):
     result = {"case": case["case"], "messages": text[-2000:], "lit": int((image > 0).sum())}
     # Infinite coordinates stop the frame (nothing else is read); the unit
     # distance is read with the transfer function, when cells render.
+    # A grid with non-finite (or degenerate) bounds may be culled by the
+    # renderer before the mapper is asked to draw: nothing drawn, nothing said.
     fatal = "infinite or NaN point coordinates"
     required = [fatal] if fatal in case["expect"] else case["expect"]
+    if fatal in required and result["lit"] == 0 and not text.strip():
+        required = []
+    if np.all(np.isfinite(np.array(case["points"], float))):  # a later mutation overwrote it
+        required = [e for e in required if e != fatal] or [
+            e for e in case["expect"] if e != fatal]
     missing = [e for e in required if e not in text and (e != "not positive" or result["lit"] > 0)]
     if missing:
         result["failure"] = "no message saying %s (mutations %s)" % (
             " / ".join(missing), ", ".join(case["mutations"]))
-    if clean_for_reference(case) and grid.GetNumberOfCells():
+    # A transfer function cut at MaximumNumberOfControlPoints is an
+    # approximation the mapper announces (a warning): not compared.
+    truncated = "control points to stay within" in text
+    if clean_for_reference(case) and grid.GetNumberOfCells() and not truncated:
         reference = ppiray.vtkUnstructuredGridReferenceRenderer()
         reference.SetInputData(grid)
         reference.SetVolumeProperty(prop)
