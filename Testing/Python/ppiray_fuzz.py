@@ -1,4 +1,4 @@
-"""Module/run fuzz [--count N] [--seed S] [--case I] [--timeout T]
+"""Module/run fuzz [--count N] [--seed S] [--first I] [--case I] [--timeout T] [--log F]
 
 Renders N generated grids, clean and malformed, with
 vtkUnstructuredGridGPURayCastMapper, each case in a child process with a
@@ -30,6 +30,10 @@ p99 at most 2/255 and at most 1 % of the covered pixels (3 at least) more
 than 8/255 apart (silhouette pixels whose rays graze an edge). Prints one
 line per failure with the command that reruns it, then a summary; exit 1 on
 any failure.
+
+--log F appends each case's result to F (one JSON line per case) and skips
+the cases F already holds, so a long run can stop and resume; the summary
+then covers every case of the range in F.
 """
 import argparse
 import json
@@ -374,6 +378,18 @@ def child(seed, first, count):
 
 
 # --------------------------------------------------------------- parent side
+def read_log(path, seed, cases):
+    """Results already in the log for this seed and these cases."""
+    results = {}
+    if os.path.exists(path):
+        with open(path) as log:
+            for line in log:
+                r = json.loads(line)
+                if r.get("seed") == seed and r["case"] in cases:
+                    results[r["case"]] = r
+    return results
+
+
 def run_batch(seed, first, count, timeout):
     """Results of cases [first, first + count) by case; a crash or a hang
     ends the batch (the cases without a result are returned as missing)."""
@@ -400,7 +416,9 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--count", type=int, default=200, help="cases (default 200)")
     parser.add_argument("--seed", type=int, default=1, help="seed (default 1)")
+    parser.add_argument("--first", type=int, default=0, help="first case (default 0)")
     parser.add_argument("--case", type=int, help="run this case only (with --child: the first)")
+    parser.add_argument("--log", help="append results to this file and resume from it")
     parser.add_argument("--timeout", type=float, default=120.0,
                         help="seconds a case may take (default 120)")
     parser.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
@@ -412,22 +430,30 @@ def main():
     if args.show and args.case is not None:
         print(json.dumps(make_case(args.seed, args.case), indent=1))
         return 0
-    first, count = (args.case, 1) if args.case is not None else (0, args.count)
+    first, count = (args.case, 1) if args.case is not None else (args.first, args.count)
     start = time.perf_counter()
-    failures, results = [], {}
+    results = read_log(args.log, args.seed, range(first, first + count)) if args.log else {}
     for batch in range(first, first + count, BATCH):
-        size = min(BATCH, first + count - batch)
-        got, outcome = run_batch(args.seed, batch, size, args.timeout)
-        results.update(got)
+        todo = [case for case in range(batch, min(batch + BATCH, first + count))
+                if case not in results]
+        if not todo:
+            continue
+        got, outcome = run_batch(args.seed, todo[0], todo[-1] + 1 - todo[0], args.timeout)
         if outcome:
             # Name the case: rerun each case without a result alone.
-            for case in range(batch, batch + size):
-                if case in got:
-                    continue
-                single, why = run_batch(args.seed, case, 1, args.timeout)
-                results.update(single)
-                if why:
-                    failures.append((case, why))
+            for case in todo:
+                if case not in got:
+                    single, why = run_batch(args.seed, case, 1, args.timeout)
+                    got.update(single)
+                    if why:
+                        got[case] = {"case": case, "failure": why}
+        got = {case: r for case, r in got.items() if case in todo}
+        results.update(got)
+        if args.log:
+            with open(args.log, "a") as log:
+                for case in sorted(got):
+                    log.write(json.dumps(dict(got[case], seed=args.seed)) + "\n")
+    failures = []
     for case, r in sorted(results.items()):
         if "failure" in r:
             failures.append((case, r["failure"]))
@@ -440,9 +466,10 @@ def main():
     for case, why in sorted(failures):
         print("FAILED case %d: %s  (Module/run fuzz --seed %d --case %d)"
               % (case, why, args.seed, case))
-    print("fuzz seed %d: %d cases in %.0f s, %d failures; %d compared with the reference "
-          "(worst p99 %.2f, worst max %.0f /255); slowest cases %s; mutations %s"
-          % (args.seed, count, time.perf_counter() - start, len(failures), len(compared),
+    print("fuzz seed %d: %d cases in %.0f s (%.0f s of cases), %d failures; %d compared with "
+          "the reference (worst p99 %.2f, worst max %.0f /255); slowest cases %s; mutations %s"
+          % (args.seed, count, time.perf_counter() - start,
+             sum(r.get("seconds", 0) for r in results.values()), len(failures), len(compared),
              max([c[1] for c in compared], default=0), max([c[2] for c in compared], default=0),
              ", ".join("%d (%.1f s)" % (r["case"], r["seconds"]) for r in slowest),
              ", ".join("%s %d" % kv for kv in sorted(kinds.items()))))
