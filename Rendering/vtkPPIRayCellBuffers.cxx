@@ -7,6 +7,8 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include <cstdint>
+#include <cstring>
 #include <iomanip>
 #include <sstream>
 
@@ -31,6 +33,9 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
        // Markers are compared against half their value: no real value comes near.
        << "const float FLAT_CELL = " << 0.5 * layout.FlatCellMarker << ";\n"
        << "const float EMPTY_CELL = " << 0.5 * layout.EmptyCellOffset << ";\n";
+  glsl << this->Geometry.TexelFunction(layout.GeometryName, "samplerBuffer", "vec4")
+       << this->Neighbors.TexelFunction(layout.NeighborName, "isamplerBuffer", "ivec4")
+       << this->Field.TexelFunction(layout.FieldName, "samplerBuffer", "vec4");
   return glsl.str();
 }
 
@@ -38,10 +43,15 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
 void vtkPPIRayCellBuffers::AppendSection(
   const std::vector<glm::dvec3>& triangles, vtkIdType cell, std::vector<float>& vertices)
 {
+  // The entry code of a start cell (march_common_fs.glsl, enterPeel): the
+  // bits 2 cell + 1 + 2^23 of a positive normal float, exact for any cell.
+  const std::uint32_t bits = static_cast<std::uint32_t>(2 * cell + 1) + (1u << 23);
+  float code;
+  std::memcpy(&code, &bits, sizeof(code));
   for (const glm::dvec3& x : triangles)
   {
-    vertices.insert(vertices.end(), { static_cast<float>(x.x), static_cast<float>(x.y),
-                                      static_cast<float>(x.z), static_cast<float>(cell) });
+    vertices.insert(vertices.end(),
+      { static_cast<float>(x.x), static_cast<float>(x.y), static_cast<float>(x.z), code });
   }
 }
 
@@ -75,22 +85,39 @@ bool vtkPPIRayCellBuffers::Upload(vtkOpenGLRenderWindow* context, vtkObject* rep
   const Layout layout = this->GetLayout();
   const size_t cells = static_cast<size_t>(this->GetNumberOfCells());
   const Arrays arrays = this->GetArrays();
+  const size_t part = this->MaximumBufferTexels;
+  auto failed = [&](const char* what, const vtkPPIRayBufferTexture& texture)
+  {
+    vtkErrorWithObjectMacro(reporter, "Could not upload "
+                                        << what << " of " << cells << " " << this->GetCellName()
+                                        << " to the GPU: " << texture.Why() << ".");
+    return false;
+  };
   if (!this->GeometryOnGPU)
   {
-    const bool ok =
-      this->Geometry.Upload(
-        context, arrays.Geometry.data(), layout.GeometryTexels * cells, 4, VTK_FLOAT) &&
-      this->Neighbors.Upload(
-        context, arrays.Neighbors.data(), layout.NeighborTexels * cells, 4, VTK_INT) &&
-      this->BoundaryFaces.Upload(
-        context, arrays.BoundaryFaces.data(), arrays.BoundaryFaces.size(), 1, VTK_INT) &&
-      this->BoundaryPoints->Upload(arrays.BoundaryPoints, vtkOpenGLBufferObject::ArrayBuffer) &&
-      this->BoundaryTriangles->Upload(
-        arrays.BoundaryTriangles, vtkOpenGLBufferObject::ElementArrayBuffer);
-    if (!ok)
+    if (!this->Geometry.Upload(
+          context, arrays.Geometry.data(), layout.GeometryTexels * cells, 4, VTK_FLOAT, part))
     {
-      vtkErrorWithObjectMacro(reporter,
-        "Could not upload the mesh to the GPU (" << cells << " " << this->GetCellName() << ").");
+      return failed("the cell geometry", this->Geometry);
+    }
+    if (!this->Neighbors.Upload(
+          context, arrays.Neighbors.data(), layout.NeighborTexels * cells, 4, VTK_INT, part))
+    {
+      return failed("the neighbours", this->Neighbors);
+    }
+    if (!this->BoundaryFaces.Upload(
+          context, arrays.BoundaryFaces.data(), arrays.BoundaryFaces.size(), 1, VTK_INT) ||
+        this->BoundaryFaces.GetNumberOfParts() > 1)
+    {
+      return failed("the boundary faces", this->BoundaryFaces);
+    }
+    if (!this->BoundaryPoints->Upload(arrays.BoundaryPoints, vtkOpenGLBufferObject::ArrayBuffer) ||
+        !this->BoundaryTriangles->Upload(
+          arrays.BoundaryTriangles, vtkOpenGLBufferObject::ElementArrayBuffer))
+    {
+      vtkErrorWithObjectMacro(reporter, "Could not upload the boundary of "
+                                          << cells << " " << this->GetCellName()
+                                          << " to the GPU (out of GPU memory?).");
       return false;
     }
     this->BoundaryBytes = sizeof(float) * arrays.BoundaryPoints.size() +
@@ -100,10 +127,10 @@ bool vtkPPIRayCellBuffers::Upload(vtkOpenGLRenderWindow* context, vtkObject* rep
   }
   if (!this->FieldOnGPU)
   {
-    if (!this->Field.Upload(context, arrays.Field.data(), layout.FieldTexels * cells, 4, VTK_FLOAT))
+    if (!this->Field.Upload(
+          context, arrays.Field.data(), layout.FieldTexels * cells, 4, VTK_FLOAT, part))
     {
-      vtkErrorWithObjectMacro(reporter, "Could not upload the scalar field to the GPU.");
-      return false;
+      return failed("the scalar field", this->Field);
     }
     this->FieldOnGPU = true;
     ++this->FieldUploadCount;
@@ -115,15 +142,20 @@ bool vtkPPIRayCellBuffers::Upload(vtkOpenGLRenderWindow* context, vtkObject* rep
 void vtkPPIRayCellBuffers::Bind(vtkShaderProgram* program, std::vector<vtkTextureObject*>& active)
 {
   const Layout layout = this->GetLayout();
-  const std::pair<vtkPPIRayBufferTexture*, const char*> textures[] = {
-    { &this->Geometry, layout.GeometryName }, { &this->Neighbors, layout.NeighborName },
-    { &this->Field, layout.FieldName }, { &this->BoundaryFaces, "boundaryFaces" }
-  };
-  for (const auto& texture : textures)
+  this->Geometry.Bind(program, layout.GeometryName, active);
+  this->Neighbors.Bind(program, layout.NeighborName, active);
+  this->Field.Bind(program, layout.FieldName, active);
+  this->BoundaryFaces.Bind(program, "boundaryFaces", active);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayCellBuffers::SetMaximumBufferTexels(size_t texels)
+{
+  if (texels != this->MaximumBufferTexels)
   {
-    texture.first->GetTexture()->Activate();
-    program->SetUniformi(texture.second, texture.first->GetTexture()->GetTextureUnit());
-    active.push_back(texture.first->GetTexture());
+    this->MaximumBufferTexels = texels;
+    this->GeometryOnGPU = false;
+    this->FieldOnGPU = false;
   }
 }
 

@@ -60,7 +60,12 @@ public:
   };
   virtual Layout GetLayout() const = 0;
 
-  /** GLSL constants of GetLayout(), as the march shaders declare them. */
+  /**
+   * GLSL constants of GetLayout(), as the march shaders declare them, and
+   * the functions reading the cell textures (`facePlanesTexel(i)`... after
+   * the layout's names: texel i of an array however many buffer textures
+   * hold it; valid after Upload()).
+   */
   std::string LayoutDeclarations() const;
 
   /** What the mesh needs of the march beyond clean cells (compiled in only then). */
@@ -111,12 +116,19 @@ public:
   /**
    * The sections of the cells cut by the plane n . x = d (plane = (n, d),
    * local frame) as triangles: 3 vertices each, 4 floats per vertex (x, y,
-   * z, cell index) appended to `vertices` (ppirayPlaneSection.h).
+   * z, the cell's entry code) appended to `vertices` (ppirayPlaneSection.h).
    */
   virtual void PlaneSection(const glm::dvec4& plane, std::vector<float>& vertices) const = 0;
 
   /** Uploads what was rebuilt since the last upload; false (error reported) on failure. */
   bool Upload(vtkOpenGLRenderWindow* context, vtkObject* reporter);
+
+  /**
+   * Texels per buffer texture at most, below GL_MAX_TEXTURE_BUFFER_SIZE (0:
+   * that limit): an array longer than that is stored in several (testing,
+   * and drivers whose limit is wrong). A change uploads again.
+   */
+  void SetMaximumBufferTexels(size_t texels);
   int GetGeometryUploadCount() const { return this->GeometryUploadCount; }
   int GetFieldUploadCount() const { return this->FieldUploadCount; }
 
@@ -170,6 +182,7 @@ private:
   vtkNew<vtkOpenGLBufferObject> BoundaryPoints;
   vtkNew<vtkOpenGLBufferObject> BoundaryTriangles;
   size_t BoundaryBytes = 0;
+  size_t MaximumBufferTexels = 0;
   int GeometryUploadCount = 0;
   int FieldUploadCount = 0;
 };

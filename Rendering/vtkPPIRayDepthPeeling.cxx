@@ -24,6 +24,7 @@
 #include "ray_fs.h"
 #include "section_fs.h"
 #include "section_vs.h"
+#include "unfinished_fs.h"
 
 namespace
 {
@@ -60,10 +61,10 @@ vtkPPIRayDepthPeeling::~vtkPPIRayDepthPeeling() = default;
 //------------------------------------------------------------------------------
 size_t vtkPPIRayDepthPeeling::GetGPUBytes() const
 {
-  // entry id (R32F), 2 accumulated (RGBA32F), 2 exit and projection state
-  // (RGBA32F), 3 depth (32F).
+  // entry code (R32F), 2 accumulated (RGBA32F), 2 exit and projection state
+  // (RGBA32F), 2 continuations (RG32F), 3 depth (32F).
   return static_cast<size_t>(this->TargetSize[0]) * this->TargetSize[1] *
-         (4 + 2 * 16 + 2 * 16 + 3 * 4);
+         (4 + 2 * 16 + 2 * 16 + 2 * 8 + 3 * 4);
 }
 
 //------------------------------------------------------------------------------
@@ -75,6 +76,7 @@ void vtkPPIRayDepthPeeling::ReleaseGraphicsResources(vtkWindow* window)
   {
     this->Accumulated[i]->ReleaseGraphicsResources(window);
     this->Exit[i]->ReleaseGraphicsResources(window);
+    this->Continuation[i]->ReleaseGraphicsResources(window);
     this->LayerDepth[i]->ReleaseGraphicsResources(window);
   }
   this->OpaqueDepth->ReleaseGraphicsResources(window);
@@ -88,10 +90,13 @@ void vtkPPIRayDepthPeeling::ReleaseGraphicsResources(vtkWindow* window)
   this->EntryProgram = nullptr;
   this->EntryVAO->ReleaseGraphicsResources();
   this->EntryPoints = nullptr;
-  if (this->CompositeQuad)
+  for (auto* quad : { &this->CompositeQuad, &this->UnfinishedQuad })
   {
-    this->CompositeQuad->ReleaseGraphicsResources(window);
-    this->CompositeQuad.reset();
+    if (*quad)
+    {
+      (*quad)->ReleaseGraphicsResources(window);
+      quad->reset();
+    }
   }
   this->SectionProgram = nullptr;
   this->SectionVAO->ReleaseGraphicsResources();
@@ -109,6 +114,8 @@ bool vtkPPIRayDepthPeeling::Prepare(vtkOpenGLRenderWindow* context, int width, i
                     AllocateTarget(this->Accumulated[1], context, width, height, 4) &&
                     AllocateTarget(this->Exit[0], context, width, height, 4) &&
                     AllocateTarget(this->Exit[1], context, width, height, 4) &&
+                    AllocateTarget(this->Continuation[0], context, width, height, 2) &&
+                    AllocateTarget(this->Continuation[1], context, width, height, 2) &&
                     AllocateDepthTarget(this->LayerDepth[0], context, width, height) &&
                     AllocateDepthTarget(this->LayerDepth[1], context, width, height);
     if (!ok)
@@ -157,9 +164,13 @@ bool vtkPPIRayDepthPeeling::Prepare(vtkOpenGLRenderWindow* context, int width, i
   {
     this->CompositeQuad.reset(new vtkOpenGLQuadHelper(context, nullptr, composite_fs, ""));
   }
-  if (!this->CompositeQuad->Program)
+  if (!this->UnfinishedQuad)
   {
-    vtkErrorWithObjectMacro(reporter, "Could not build the composite shader.");
+    this->UnfinishedQuad.reset(new vtkOpenGLQuadHelper(context, nullptr, unfinished_fs, ""));
+  }
+  if (!this->CompositeQuad->Program || !this->UnfinishedQuad->Program)
+  {
+    vtkErrorWithObjectMacro(reporter, "Could not build the composite shaders.");
     return false;
   }
   return true;
@@ -262,15 +273,19 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
   this->Layer = 0;
   fbo->AddColorAttachment(0, this->Accumulated[0]);
   fbo->AddColorAttachment(1, this->Exit[0]);
-  fbo->ActivateDrawBuffers(2);
+  fbo->AddColorAttachment(2, this->Continuation[0]);
+  fbo->ActivateDrawBuffers(3);
   state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  fbo->RemoveColorAttachment(2);
   fbo->RemoveColorAttachment(1);
 
   int peel = 0;
+  this->Continuations = 0;
+  bool finished = true;
   if (frame.Section && !frame.Section->empty() && this->EnterAtNearPlane(context, frame, reporter))
   {
-    this->March(context, frame, march, marchInputs);
+    finished = this->MarchToEnd(context, frame, march, marchInputs) && finished;
     ++peel;
   }
   bool entered = false;
@@ -281,13 +296,77 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
     {
       break;
     }
-    this->March(context, frame, march, marchInputs);
+    finished = this->MarchToEnd(context, frame, march, marchInputs) && finished;
   }
   cut = peel == frame.MaximumPeels && entered;
+  if (!finished)
+  {
+    vtkWarningWithObjectMacro(
+      reporter, "Some rays were still unfinished after "
+                  << MaximumContinuations
+                  << " passes of the march's loop budget: they are cut where they stopped.");
+  }
   fbo->RemoveDepthAttachment();
   state->PopFramebufferBindings();
   this->Composite(context, frame);
   return peel;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPPIRayDepthPeeling::MarchToEnd(vtkOpenGLRenderWindow* context, const Frame& frame,
+  vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs)
+{
+  this->March(context, frame, march, marchInputs);
+  for (int pass = 0; this->Unfinished(context); ++pass)
+  {
+    if (pass == MaximumContinuations)
+    {
+      // Given up: the rays stay where they stopped, not continued by the
+      // next peel's march.
+      vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
+      fbo->AddColorAttachment(0, this->Continuation[this->Current]);
+      fbo->ActivateDrawBuffers(1);
+      context->GetState()->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+      context->GetState()->vtkglClear(GL_COLOR_BUFFER_BIT);
+      return false;
+    }
+    this->March(context, frame, march, marchInputs);
+    ++this->Continuations;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayDepthPeeling::ClearEntries(vtkOpenGLRenderWindow* context)
+{
+  vtkOpenGLState* state = context->GetState();
+  vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
+  fbo->RemoveDepthAttachment();
+  fbo->AddColorAttachment(0, this->EntryTexture);
+  fbo->ActivateDrawBuffers(1);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglDisable(GL_BLEND);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPPIRayDepthPeeling::Unfinished(vtkOpenGLRenderWindow* context)
+{
+  this->ClearEntries(context);
+  vtkShaderProgram* program = this->UnfinishedQuad->Program;
+  context->GetShaderCache()->ReadyShaderProgram(program);
+  vtkTextureObject* continuation = this->Continuation[this->Current];
+  continuation->Activate();
+  program->SetUniformi("continuation", continuation->GetTextureUnit());
+  glBeginQuery(GL_SAMPLES_PASSED, this->Query);
+  this->UnfinishedQuad->Render();
+  glEndQuery(GL_SAMPLES_PASSED);
+  continuation->Deactivate();
+  GLuint samplesPassed = 0;
+  glGetQueryObjectuiv(this->Query, GL_QUERY_RESULT, &samplesPassed);
+  return samplesPassed > 0;
 }
 
 //------------------------------------------------------------------------------
@@ -338,6 +417,7 @@ bool vtkPPIRayDepthPeeling::Enter(
   }
   GLuint samplesPassed = 0;
   glGetQueryObjectuiv(this->Query, GL_QUERY_RESULT, &samplesPassed);
+  this->Layer = 1 - this->Layer;
   return samplesPassed > 0;
 }
 
@@ -360,16 +440,7 @@ bool vtkPPIRayDepthPeeling::EnterAtNearPlane(
     vtkErrorWithObjectMacro(reporter, "Could not draw the near plane's sections.");
     return false;
   }
-  vtkOpenGLState* state = context->GetState();
-  vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
-  fbo->RemoveDepthAttachment();
-  fbo->AddColorAttachment(0, this->EntryTexture);
-  fbo->ActivateDrawBuffers(1);
-  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglDisable(GL_CULL_FACE);
+  this->ClearEntries(context);
   this->SectionProgram->SetUniformMatrix4x4("localToClip", const_cast<float*>(frame.LocalToClip));
   this->SectionVAO->Bind();
   this->SectionVAO->AddAttributeArray(this->SectionProgram, this->SectionVertices, "vertexMC", 0,
@@ -391,15 +462,18 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
   fbo->RemoveDepthAttachment();
   fbo->AddColorAttachment(0, this->Accumulated[next]);
   fbo->AddColorAttachment(1, this->Exit[next]);
-  fbo->ActivateDrawBuffers(2);
+  fbo->AddColorAttachment(2, this->Continuation[next]);
+  fbo->ActivateDrawBuffers(3);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_CULL_FACE);
 
   vtkShaderProgram* program = march.Program;
   context->GetShaderCache()->ReadyShaderProgram(program);
   std::vector<vtkTextureObject*> textures = { this->EntryTexture, this->OpaqueDepth,
-    this->Accumulated[this->Current], this->Exit[this->Current] };
-  const char* names[] = { "entryTriangle", "opaqueDepth", "previousAccumulated", "previousExit" };
+    this->Accumulated[this->Current], this->Exit[this->Current],
+    this->Continuation[this->Current] };
+  const char* names[] = { "entryTriangle", "opaqueDepth", "previousAccumulated", "previousExit",
+    "previousContinuation" };
   for (size_t i = 0; i < textures.size(); ++i)
   {
     textures[i]->Activate();
@@ -412,9 +486,9 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
   {
     texture->Deactivate();
   }
+  fbo->RemoveColorAttachment(2);
   fbo->RemoveColorAttachment(1);
   this->Current = next;
-  this->Layer = 1 - this->Layer;
 }
 
 //------------------------------------------------------------------------------

@@ -67,6 +67,15 @@ public:
   int Render(vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayCellBuffers& cells,
     vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs, bool& cut, vtkObject* reporter);
 
+  /**
+   * Passes the last frame added where rays ran out of the march's loop
+   * budget (march_common_fs.glsl) and were continued.
+   */
+  int GetNumberOfContinuations() const { return this->Continuations; }
+
+  /** Continuation passes after one march, at most (then a warning). */
+  static constexpr int MaximumContinuations = 1024;
+
   size_t GetGPUBytes() const;
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -88,14 +97,24 @@ private:
   bool EnterAtNearPlane(vtkOpenGLRenderWindow* context, const Frame& frame, vtkObject* reporter);
   void March(vtkOpenGLRenderWindow* context, const Frame& frame, vtkOpenGLQuadHelper& march,
     const MarchInputs& marchInputs);
+  // March, then continue the rays that ran out of the loop budget until none
+  // is left (at most MaximumContinuations passes; false if some were left).
+  bool MarchToEnd(vtkOpenGLRenderWindow* context, const Frame& frame, vtkOpenGLQuadHelper& march,
+    const MarchInputs& marchInputs);
+  // EntryTexture bound alone and cleared (no entries), for a flat pass.
+  void ClearEntries(vtkOpenGLRenderWindow* context);
+  // Whether the last march left rays unfinished (clears EntryTexture, so the
+  // next march starts no new ray).
+  bool Unfinished(vtkOpenGLRenderWindow* context);
   void Composite(vtkOpenGLRenderWindow* context, const Frame& frame);
   // The viewing ray's uniforms (ray_fs.glsl): clipToLocal, the clipping planes.
   static void SetRayUniforms(vtkShaderProgram* program, const Frame& frame);
 
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   vtkNew<vtkTextureObject> EntryTexture;
-  vtkNew<vtkTextureObject> Accumulated[2]; // ping-pong: colour so far
-  vtkNew<vtkTextureObject> Exit[2];        // ping-pong: where the last march stopped, projection
+  vtkNew<vtkTextureObject> Accumulated[2];  // ping-pong: colour so far
+  vtkNew<vtkTextureObject> Exit[2];         // ping-pong: where the last march stopped, projection
+  vtkNew<vtkTextureObject> Continuation[2]; // ping-pong: where rays ran out of loops, steps
   vtkNew<vtkTextureObject> LayerDepth[2];
   vtkNew<vtkTextureObject> OpaqueDepth; // same format as VTK's depth buffer
   int OpaqueDepthFormat = -2;
@@ -109,6 +128,8 @@ private:
   vtkOpenGLBufferObject* EntryPoints = nullptr; // the buffer EntryVAO reads
   int EntryPointsUpload = -1;                   // its upload count then
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> UnfinishedQuad;
+  int Continuations = 0;
 
   vtkShaderProgram* SectionProgram = nullptr; // owned by the shader cache
   vtkNew<vtkOpenGLVertexArrayObject> SectionVAO;

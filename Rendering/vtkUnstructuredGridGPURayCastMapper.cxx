@@ -25,6 +25,7 @@
 #include "vtkVolume.h"
 #include "vtkVolumeCollection.h"
 #include "vtkVolumeProperty.h"
+#include "vtkWeakPointer.h"
 
 #include "ppirayValidPointIds.h"
 
@@ -69,6 +70,26 @@ public:
   bool OverlapWarned = false;        // overlapping PPIRay volumes were reported
   std::vector<float> Section;        // this frame's near-plane sections
   std::vector<float> ClippingPlanes; // this frame's clipping planes, local frame
+  // The context the GL objects live in (one at a time, as VTK's own mappers
+  // keep them).
+  vtkWeakPointer<vtkOpenGLRenderWindow> Context;
+
+  // Releases the GL objects in the context they live in (made current for
+  // it, then restored), else in `window`'s.
+  void ReleaseInTheirContext(vtkWindow* window)
+  {
+    if (vtkOpenGLRenderWindow* context = this->Context)
+    {
+      context->PushContext();
+      this->ReleaseGraphicsResources(context);
+      context->PopContext();
+      this->Context = nullptr;
+    }
+    else
+    {
+      this->ReleaseGraphicsResources(window);
+    }
+  }
 
   void ReleaseGraphicsResources(vtkWindow* window)
   {
@@ -162,7 +183,13 @@ vtkUnstructuredGridGPURayCastMapper::vtkUnstructuredGridGPURayCastMapper()
 }
 
 //------------------------------------------------------------------------------
-vtkUnstructuredGridGPURayCastMapper::~vtkUnstructuredGridGPURayCastMapper() = default;
+vtkUnstructuredGridGPURayCastMapper::~vtkUnstructuredGridGPURayCastMapper()
+{
+  if (this->Internals->Context)
+  {
+    this->Internals->ReleaseInTheirContext(nullptr);
+  }
+}
 
 //------------------------------------------------------------------------------
 void vtkUnstructuredGridGPURayCastMapper::SetIntegrationMode(int mode)
@@ -281,7 +308,9 @@ vtkIdType vtkUnstructuredGridGPURayCastMapper::GetGPUMemorySize()
 //------------------------------------------------------------------------------
 void vtkUnstructuredGridGPURayCastMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
-  this->Internals->ReleaseGraphicsResources(window);
+  // Whichever window asks (a renderer the volume leaves, a window closing),
+  // the objects are deleted in their own context.
+  this->Internals->ReleaseInTheirContext(window);
   this->Superclass::ReleaseGraphicsResources(window);
 }
 
@@ -454,6 +483,7 @@ void vtkUnstructuredGridGPURayCastMapper::WarnAboutOverlappingVolumes(
 void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   this->NumberOfPeels = 0;
+  this->NumberOfContinuations = 0;
   if (this->GetInputAlgorithm())
   {
     this->GetInputAlgorithm()->Update();
@@ -471,7 +501,14 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   }
 
   // Find what is stale and update the collaborators, on the CPU, then the GPU.
+  // GL objects made in another context (a second window) are released there
+  // first and made again in this one.
   vtkInternals& in = *this->Internals;
+  if (in.Context != context)
+  {
+    in.ReleaseInTheirContext(context);
+    in.Context = context;
+  }
   this->WarnAboutOverlappingVolumes(ren, vol);
   const ppiray::IsoSurfaceMode isoMode =
     in.IsoSurfaces.Update(ren, vol, this->BlendMode, this->EmbedIsoSurfaces != 0, this);
@@ -480,6 +517,7 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   {
     return;
   }
+  in.Cells->SetMaximumBufferTexels(static_cast<size_t>(this->MaximumBufferTexels));
   if (!in.Cells->Upload(context, this) || !in.TransferFunction.Upload(context, this) ||
       !this->UpdateIntegrator(context))
   {
@@ -562,6 +600,7 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   bool cut = false;
   this->NumberOfPeels =
     std::max(0, in.Peeling.Render(context, frame, *in.Cells, *march, marchInputs, cut, this));
+  this->NumberOfContinuations = in.Peeling.GetNumberOfContinuations();
   if (cut)
   {
     vtkWarningMacro(
@@ -588,6 +627,8 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "PreIntegrationTableSize: " << this->PreIntegrationTableSize << "\n";
   os << indent << "TerminationOpacity: " << this->TerminationOpacity << "\n";
   os << indent << "NumberOfPeels: " << this->NumberOfPeels << "\n";
+  os << indent << "NumberOfContinuations: " << this->NumberOfContinuations << "\n";
+  os << indent << "MaximumBufferTexels: " << this->MaximumBufferTexels << "\n";
   os << indent << "GeometryUploadCount: " << this->GetGeometryUploadCount() << "\n";
   os << indent << "FieldUploadCount: " << this->GetFieldUploadCount() << "\n";
   os << indent << "TransferFunctionUploadCount: " << this->GetTransferFunctionUploadCount() << "\n";

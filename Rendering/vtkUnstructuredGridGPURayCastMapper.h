@@ -256,6 +256,18 @@ public:
 
   ///@{
   /**
+   * Texels per buffer texture at most; 0 (default): the OpenGL limit,
+   * GL_MAX_TEXTURE_BUFFER_SIZE (commonly 2^27: 33.5 M tetrahedra or 22 M
+   * hexahedra per buffer). A mesh whose cell textures exceed it is stored in
+   * up to 6 buffer textures per array. Lower values are for testing the
+   * split and for drivers whose limit is wrong.
+   */
+  vtkSetClampMacro(MaximumBufferTexels, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(MaximumBufferTexels, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
    * Resolution of the Psi table (default 512: bilinear lookup error at most
    * 2.3e-4 in Psi, i.e. below 0.06/255 in colour; 1 MB of GPU memory; see
    * Documentation/algorithms.md and TestPsiTable).
@@ -290,6 +302,14 @@ public:
    * Number of peels the last frame needed.
    */
   vtkGetMacro(NumberOfPeels, int);
+
+  /**
+   * March passes the last frame added to continue rays that needed more loop
+   * iterations than one pass takes (thousands of transfer-function control
+   * points crossed along a ray; some drivers end a shader's loops silently
+   * past a total count, Mesa's llvmpipe at 65,535).
+   */
+  vtkGetMacro(NumberOfContinuations, int);
 
   /**
    * Bytes this mapper holds on the GPU (cell textures, boundary, transfer
@@ -327,10 +347,12 @@ protected:
   int VectorComponent = 0;
   int MaximumNumberOfPeels = 64;
   int MaximumNumberOfSteps = 0;
+  vtkIdType MaximumBufferTexels = 0;
   int PsiTableSize = 512;
   int PreIntegrationTableSize = 64;
   double TerminationOpacity = 0.999;
   int NumberOfPeels = 0;
+  int NumberOfContinuations = 0;
 
   // Stages of Render(), each refreshing a collaborator when its source
   // changed: the cells (tetrahedra or hexahedra), the scalar field in them,

@@ -1,4 +1,8 @@
 //VTK::System::Dec
+#if __VERSION__ < 330
+// uintBitsToFloat (the entry code, march_common_fs.glsl)
+#extension GL_ARB_shader_bit_encoding : require
+#endif
 // Entry and peel pass (Espinha & Celes 2005, Sec. 3.3): per pixel, the nearest
 // front-facing boundary triangle strictly behind the previous layer's entry
 // triangle (classic depth peeling: the same face is never entered twice).
@@ -26,7 +30,7 @@ in vec3 localPosition;
 
 //PPIRay::Ray::Impl
 
-out vec4 fragOutput0; // r: boundary triangle id + 1 (0: no entry)
+out vec4 fragOutput0; // r: the entry code of the boundary triangle (0: no entry)
 
 void main()
 {
@@ -50,5 +54,5 @@ void main()
       discard;
     }
   }
-  fragOutput0 = vec4(float(gl_PrimitiveID + 1), 0.0, 0.0, 1.0);
+  fragOutput0 = vec4(uintBitsToFloat(uint(2 * gl_PrimitiveID) + 0x00800000u), 0.0, 0.0, 1.0);
 }

@@ -8,6 +8,8 @@
 //   I = int_xA^xB C(f(x)) tau(f(x)) exp(-Z(x)) dx
 // by 4-point Gauss-Legendre quadrature on 1 to 8 equal sub-intervals (more
 // when the piece is optically thick, where exp(-Z) varies fastest).
+// Loop iterations a piece may take: its own, cubicCrossing's, the quadrature's.
+const int CUBIC_PIECE_LOOPS = 1 + 32 + 8 * 5;
 
 void integrateCubicPiece(vec4 w, float xA, float xB, float sA, float sB, vec4 tfA, vec4 tfB,
   inout vec4 color)
@@ -50,7 +52,7 @@ int integrateMonotonicPiece(vec4 w, float xA, float x1, float sA, float s1, int 
   k = controlInterval(sA, k);
   float ds = s1 - sA;
   vec4 tfA = transferFunction(sA, k);
-  for (int i = 0; i <= n; ++i)
+  for (int i = 0; i <= n && spendLoops(CUBIC_PIECE_LOOPS); ++i)
   {
     float sB;
     int nextK = nextControlCrossing(ds, s1, k, sB);

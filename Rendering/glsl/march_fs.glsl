@@ -1,4 +1,8 @@
 //VTK::System::Dec
+#if __VERSION__ < 330
+// floatBitsToUint, uintBitsToFloat (continuations, march_common_fs.glsl)
+#extension GL_ARB_shader_bit_encoding : require
+#endif
 // March pass: per pixel, from the cell a ray enters through (entry pass) to
 // the cell it leaves the mesh from, one tetrahedron at a time.
 //
@@ -39,6 +43,11 @@ uniform samplerBuffer field;
 
 //PPIRay::Integrate::Impl
 
+// Loop iterations a cell step may take outside its pieces (march_common_fs.glsl):
+// its own, the face loops (4 + 4, a flat cell's 4 + 4), the isovalue
+// crossings and walks.
+const int STEP_LOOPS = 17 + (ISO_MODE == 0 ? 0 : 4 * MAXIMUM_ISO_VALUES);
+
 // One cell's stretch of the ray, x in [0, len] past `entry`, on which s goes
 // linearly from sFront to sBack (gradient g): the volume integrated up to
 // each isosurface crossed (at x = len (v - sFront) / (sBack - sFront)), unless
@@ -78,6 +87,11 @@ int integrateTetrahedronSegment(float sFront, float sBack, float len, vec3 g, ve
     if (ISO_MODE == 1 && xv > x)
     {
       k = integrateSegment(sA, v, xv - x, k, color);
+      if (outOfLoops)
+      {
+        cutAt += x;
+        return k;
+      }
     }
     compositeIsoSurface(surface, entry + xv * direction, g, direction, color);
     x = xv;
@@ -87,6 +101,7 @@ int integrateTetrahedronSegment(float sFront, float sBack, float len, vec3 g, ve
   if (ISO_MODE != 2 && len > x)
   {
     k = integrateSegment(sA, sBack, len - x, k, color);
+    cutAt += x;
   }
   return k;
 }
@@ -96,7 +111,7 @@ int integrateTetrahedronSegment(float sFront, float sBack, float len, vec3 g, ve
 // Plane of face f of cell t.
 vec4 facePlane(int t, int f)
 {
-  return texelFetch(facePlanes, GEOMETRY_TEXELS * t + f);
+  return facePlanesTexel(GEOMETRY_TEXELS * t + f);
 }
 
 
@@ -142,8 +157,10 @@ void main()
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 before;
   float resume;
-  int startCell;
-  int cellFace = enterPeel(pixel, before, resume, startCell);
+  int startCell, startFace;
+  bool resumeBackwards;
+  int stepsTaken;
+  int cellFace = enterPeel(pixel, before, resume, startCell, startFace, resumeBackwards, stepsTaken);
   if (cellFace < 0 && startCell < 0)
   {
     return;
@@ -163,9 +180,10 @@ void main()
   float tStop = min(opaqueStop(opaqueDepth, pixel, ndc, origin, direction), kept.y);
 
   // Into the first cell: through its entry face, or already in it at the
-  // near plane (t = 0) when the ray starts inside the mesh.
+  // near plane (t = 0) when the ray starts inside the mesh, or where the
+  // previous pass ran out of loops.
   int cell = startCell;
-  int entryFace = -1;
+  int entryFace = startFace;
   float t = resume;
   if (startCell < 0)
   {
@@ -187,9 +205,17 @@ void main()
   int j = -1; // isovalue interval, set at the first cell
   vec4 color = vec4(0.0);
   float reached = t;
-  bool backwards = false;
-  for (int step = 0; step < maximumSteps; ++step)
+  bool backwards = resumeBackwards;
+  float continuation = 0.0;
+  int step = stepsTaken;
+  for (; step < maximumSteps; ++step)
   {
+    if (!spendLoops(STEP_LOOPS))
+    {
+      continuation = continuationCode(cell, entryFace, backwards);
+      reached = t;
+      break;
+    }
     vec4 p[4];
     for (int f = 0; f < 4; ++f)
     {
@@ -224,7 +250,7 @@ void main()
         tExit = max(tExit, t);
         float tEnd = min(tExit, tStop);
         float tFrom = max(t, tKept);
-        vec4 g = texelFetch(field, FIELD_TEXELS * cell);
+        vec4 g = fieldTexel(FIELD_TEXELS * cell);
         if (g.w > EMPTY_CELL && tEnd > tFrom)
         {
           float sFront = dot(g.xyz, origin + tFrom * direction) + g.w;
@@ -237,6 +263,12 @@ void main()
           else
           {
             projectLinearStretch(sFront, sBack, tEnd - tFrom, k, projection);
+          }
+          if (outOfLoops)
+          {
+            continuation = continuationCode(cell, entryFace, backwards);
+            reached = tFrom + cutAt;
+            break;
           }
         }
         reached = max(reached, tEnd);
@@ -251,7 +283,7 @@ void main()
     {
       break;
     }
-    int next = texelFetch(neighbors, NEIGHBOR_TEXELS * cell)[exitFace];
+    int next = neighborsTexel(NEIGHBOR_TEXELS * cell)[exitFace];
     if (next == -1)
     {
       break;
@@ -272,4 +304,5 @@ void main()
     entryFace = next - FACES * cell;
   }
   finishPeel(before, color, reached, projection);
+  fragOutput2 = vec4(continuation, float(step), 0.0, 0.0);
 }

@@ -1,4 +1,8 @@
 //VTK::System::Dec
+#if __VERSION__ < 330
+// floatBitsToUint, uintBitsToFloat (continuations, march_common_fs.glsl)
+#extension GL_ARB_shader_bit_encoding : require
+#endif
 // March pass for hexahedral meshes rendered without subdivision (Miranda
 // 2011): per pixel, from the cell a ray enters through (entry pass) to where
 // it leaves the mesh, one hexahedron at a time.
@@ -121,12 +125,12 @@ int integrateHexahedronSegment(vec4 w, float len, vec4 c, vec4 d, vec3 q, vec3 r
 
 void loadCorners(int h, out vec3 p[8])
 {
-  vec4 t0 = texelFetch(hexCorners, GEOMETRY_TEXELS * h);
-  vec4 t1 = texelFetch(hexCorners, GEOMETRY_TEXELS * h + 1);
-  vec4 t2 = texelFetch(hexCorners, GEOMETRY_TEXELS * h + 2);
-  vec4 t3 = texelFetch(hexCorners, GEOMETRY_TEXELS * h + 3);
-  vec4 t4 = texelFetch(hexCorners, GEOMETRY_TEXELS * h + 4);
-  vec4 t5 = texelFetch(hexCorners, GEOMETRY_TEXELS * h + 5);
+  vec4 t0 = hexCornersTexel(GEOMETRY_TEXELS * h);
+  vec4 t1 = hexCornersTexel(GEOMETRY_TEXELS * h + 1);
+  vec4 t2 = hexCornersTexel(GEOMETRY_TEXELS * h + 2);
+  vec4 t3 = hexCornersTexel(GEOMETRY_TEXELS * h + 3);
+  vec4 t4 = hexCornersTexel(GEOMETRY_TEXELS * h + 4);
+  vec4 t5 = hexCornersTexel(GEOMETRY_TEXELS * h + 5);
   p[0] = t0.xyz;
   p[1] = vec3(t0.w, t1.xy);
   p[2] = vec3(t1.zw, t2.x);
@@ -152,7 +156,7 @@ ivec3 faceTriangle(int f, int t, int mask)
 // The neighbour code through face f of hexahedron h.
 int neighborThrough(int h, int f)
 {
-  ivec4 n = texelFetch(hexNeighbors, NEIGHBOR_TEXELS * h + f / 4);
+  ivec4 n = hexNeighborsTexel(NEIGHBOR_TEXELS * h + f / 4);
   int i = f - 4 * (f / 4);
   return i == 0 ? n.x : (i == 1 ? n.y : (i == 2 ? n.z : n.w));
 }
@@ -199,13 +203,20 @@ bool exitCandidate(int f, int entryFace, float tf, float t)
   return f != entryFace || tf > t + 1.0e-5 * abs(t);
 }
 
+// Loop iterations a cell step may take outside its pieces (march_common_fs.glsl):
+// its own, the two searches over 6 faces x 2 triangles, the corners, the
+// cubic's extrema and monotonic pieces, the isovalue crossings and walks.
+const int HEX_STEP_LOOPS = 64 + (ISO_MODE == 0 ? 0 : 4 * MAXIMUM_ISO_VALUES);
+
 void main()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 before;
   float resume;
-  int startCell;
-  int code = enterPeel(pixel, before, resume, startCell); // 2 (FACES h + f) + t
+  int startCell, startFace;
+  bool resumeBackwards;
+  int stepsTaken;
+  int code = enterPeel(pixel, before, resume, startCell, startFace, resumeBackwards, stepsTaken); // 2 (FACES h + f) + t
   if (code < 0 && startCell < 0)
   {
     return;
@@ -225,12 +236,13 @@ void main()
   float tStop = min(opaqueStop(opaqueDepth, pixel, ndc, origin, direction), kept.y);
 
   // Into the first cell: through a triangle of its entry face, or already in
-  // it at the near plane (t = 0) when the ray starts inside the mesh.
+  // it at the near plane (t = 0) when the ray starts inside the mesh, or
+  // where the previous pass ran out of loops.
   int cell = startCell < 0 ? code / (2 * FACES) : startCell;
   vec3 p[8];
   loadCorners(cell, p);
-  int mask = texelFetch(hexNeighbors, NEIGHBOR_TEXELS * cell + 1).z;
-  int entryFace = -1;
+  int mask = hexNeighborsTexel(NEIGHBOR_TEXELS * cell + 1).z;
+  int entryFace = startFace;
   float t = resume;
   if (startCell < 0)
   {
@@ -244,10 +256,22 @@ void main()
   int j = -1; // isovalue interval, set at the first cell
   vec4 color = vec4(0.0);
   float reached = t;
-  bool backwards = false;
+  bool backwards = resumeBackwards;
   int foldCell = -1, foldFace = -1;
-  for (int step = 0; step < maximumSteps; ++step)
+  float continuation = 0.0;
+  int step = stepsTaken;
+  for (; step < maximumSteps; ++step)
   {
+    // The loop budget, per cell step: a step left unfinished is redone whole
+    // by the next pass, whose first step always finishes (progress); a walk
+    // back (nothing integrated, a fold to return to) is never cut.
+    loopsWaived = step == stepsTaken;
+    if (!backwards && !spendLoops(HEX_STEP_LOOPS))
+    {
+      continuation = continuationCode(cell, entryFace, false);
+      reached = t;
+      break;
+    }
     // Exit: the nearest face plane the ray heads out of (the convex-cell
     // rule), accepted if the ray crosses that triangle; else (a concave fold
     // of a non-planar face) the nearest triangle actually crossed. Walking
@@ -318,7 +342,7 @@ void main()
       float tEnd = min(tExit, tStop);
       reached = tEnd;
       float tFrom = max(t, tKept);
-      vec4 c0 = texelFetch(hexCoefficients, FIELD_TEXELS * cell);
+      vec4 c0 = hexCoefficientsTexel(FIELD_TEXELS * cell);
       if (c0.x > EMPTY_CELL && tEnd > tFrom)
       {
         mat3 frame = mat3(p[1] - p[0], p[3] - p[0], p[4] - p[0]);
@@ -330,8 +354,11 @@ void main()
           vec3 entry = origin + tFrom * direction;
           vec3 q = toFrame * (entry - p[0]);
           vec3 r = toFrame * direction;
-          vec4 c1 = texelFetch(hexCoefficients, FIELD_TEXELS * cell + 1);
+          vec4 c1 = hexCoefficientsTexel(FIELD_TEXELS * cell + 1);
           vec4 w = rayCubic(c0, c1, q, r);
+          vec4 colorBefore = color;
+          vec3 projectionBefore = projection;
+          int kBefore = k, jBefore = j;
           if (BLEND == 0)
           {
             k = integrateHexahedronSegment(
@@ -340,6 +367,16 @@ void main()
           else
           {
             projectCubicStretch(w, tEnd - tFrom, k, projection);
+          }
+          if (outOfLoops)
+          {
+            color = colorBefore;
+            projection = projectionBefore;
+            k = kBefore;
+            j = jBefore;
+            continuation = continuationCode(cell, entryFace, false);
+            reached = t;
+            break;
           }
         }
       }
@@ -385,7 +422,8 @@ void main()
     cell = nextCell;
     entryFace = nextFace;
     loadCorners(cell, p);
-    mask = texelFetch(hexNeighbors, NEIGHBOR_TEXELS * cell + 1).z;
+    mask = hexNeighborsTexel(NEIGHBOR_TEXELS * cell + 1).z;
   }
   finishPeel(before, color, reached, projection);
+  fragOutput2 = vec4(continuation, float(step), 0.0, 0.0);
 }

@@ -8,6 +8,7 @@
 // gamma = tau D / (tau D + 1) that removes the square-root edge of Psi at
 // gamma_b -> 1 (see vtkPsiTable.h).
 uniform sampler2D psiTable;
+const int PIECE_LOOPS = 1;
 uniform float psiTableSize;
 
 void integratePiece(vec4 front, vec4 back, float len, inout vec4 color)

@@ -67,7 +67,7 @@ void projectCubicStretch(vec4 w, float len, inout int k, inout vec3 state)
     }
     k = controlInterval(sA, k);
     float ds = sEnd - sA;
-    for (int i = 0; i <= n; ++i)
+    for (int i = 0; i <= n && spendLoops(1 + 32); ++i)
     {
       float sB;
       int nextK = nextControlCrossing(ds, sEnd, k, sB);

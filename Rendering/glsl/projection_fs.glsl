@@ -12,8 +12,8 @@
 // o is the scalar opacity, tau = o / unit distance as in the control points,
 // n(s) the scalar normalized to the field's range (n = a s + b). Both
 // integrands are quadratic in s between control points, where o is linear.
-// The state is carried across peels in the exit target's (g, b, a):
-// BLEND 1, 2: (extreme, met, 0); 3: (int tau n, int dt, 0); 4: (int tau n, met, 0).
+// The state is carried across peels in the exit target's (g, b):
+// BLEND 1, 2: (extreme, met); 3: (int tau n, int dt); 4: (int tau n, met).
 //PPIRay::Blend::Dec
 uniform float opacityUnitDistance;
 uniform vec2 normalizedScalar; // (a, b): n(s) = a s + b
@@ -57,9 +57,11 @@ vec2 averageRangeFraction(float sFront, float sBack)
 }
 
 // A stretch of length len on which s goes linearly from sFront to sBack
-// (k: its control interval, kept for the next stretch).
+// (k: its control interval, kept for the next stretch). Out of loops: stops
+// at a control point, cutAt that far along the stretch.
 void projectLinearStretch(float sFront, float sBack, float len, inout int k, inout vec3 state)
 {
+  float offset = 0.0;
   if (BLEND == 1 || BLEND == 2)
   {
     meetScalar(sFront, state);
@@ -76,8 +78,8 @@ void projectLinearStretch(float sFront, float sBack, float len, inout int k, ino
     float ds = sBack - sFront;
     sBack = sFront + kept.y * ds;
     sFront += kept.x * ds;
+    offset = kept.x * len;
     len *= kept.y - kept.x;
-    state.y += len;
   }
   else
   {
@@ -89,9 +91,18 @@ void projectLinearStretch(float sFront, float sBack, float len, inout int k, ino
   float sA = sFront;
   for (int i = 0; i <= n; ++i)
   {
+    if (!spendLoops(1))
+    {
+      cutAt = offset + (ds == 0.0 ? 0.0 : len * (sA - sFront) / ds);
+      return;
+    }
     float sB;
     int nextK = nextControlCrossing(ds, sBack, k, sB);
     float pieceLength = ds == 0.0 ? len : len * (sB - sA) / ds;
+    if (BLEND == 3)
+    {
+      state.y += pieceLength;
+    }
     state.x += linearPieceMoment(
       sA, sB, transferFunction(sA, k).a, transferFunction(sB, k).a, pieceLength);
     if (nextK == k)
@@ -136,6 +147,6 @@ void finishPeel(vec4 before, vec4 color, float reached, vec3 state)
   else
   {
     fragOutput0 = projectionColor(state);
-    fragOutput1 = vec4(reached, state);
+    fragOutput1 = vec4(reached, state.xy, 0.0);
   }
 }

@@ -4,7 +4,7 @@
 // frame. They lie on the near plane, where clipping would cut them, so they
 // are drawn at mid depth (no depth test: the sections of a mesh do not overlap).
 
-in vec4 vertexMC; // xyz: the point; w: the cell it is a section of
+in vec4 vertexMC; // xyz: the point; w: the entry code of the cell it is a section of
 uniform mat4 localToClip;
 flat out float sectionCell;
 

@@ -4,7 +4,8 @@
 // A segment of length `len` on which s goes linearly from sFront to sBack:
 // split at every control point value strictly between them
 // (nextControlCrossing), each piece integrated by integratePiece(). Returns
-// the control interval at sBack.
+// the control interval at sBack. Out of loops (PIECE_LOOPS a piece): stops at
+// a control point, cutAt that far along the segment, returning its interval.
 int integrateSegment(float sFront, float sBack, float len, int k, inout vec4 color)
 {
   int n = numberOfControlPoints;
@@ -14,6 +15,11 @@ int integrateSegment(float sFront, float sBack, float len, int k, inout vec4 col
   vec4 tfA = transferFunction(sA, k);
   for (int i = 0; i <= n; ++i)
   {
+    if (!spendLoops(PIECE_LOOPS))
+    {
+      cutAt = ds == 0.0 ? 0.0 : len * (sA - sFront) / ds;
+      break;
+    }
     float sB;
     int nextK = nextControlCrossing(ds, sBack, k, sB);
     vec4 tfB = transferFunction(sB, k);

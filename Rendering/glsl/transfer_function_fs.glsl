@@ -27,18 +27,22 @@ vec4 transferFunction(float s, int k)
 // Index k with s_k <= s < s_k+1 (-1 below the first point), moved from the
 // previous cell's index: the scalar is continuous along a ray for point data,
 // so this is usually zero or one step. Bounded by the number of points.
+// Its steps are taken from the loop budget.
 int controlInterval(float s, int k)
 {
   int n = numberOfControlPoints;
   k = clamp(k, -1, n - 1);
-  for (int i = 0; i < n && k + 1 < n && controlPointValue(k + 1) <= s; ++i)
+  int i = 0;
+  for (; i < n && k + 1 < n && controlPointValue(k + 1) <= s; ++i)
   {
     ++k;
   }
-  for (int i = 0; i < n && k >= 0 && controlPointValue(k) > s; ++i)
+  int j = 0;
+  for (; j < n && k >= 0 && controlPointValue(k) > s; ++j)
   {
     --k;
   }
+  loopsLeft -= i + j; // taken after the fact from the reserve (march_common_fs.glsl)
   return k;
 }
 

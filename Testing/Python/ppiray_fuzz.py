@@ -275,8 +275,9 @@ def place_camera(renderer, case, grid):
     camera.OrthogonalizeViewUp()
 
 
-def render_case(case, window, renderer, messages):
-    """Render one case; returns its result (a dict)."""
+def render_case(case, window, renderer, messages, images=None):
+    """Render one case; returns its result (a dict). images, a dict, receives
+    the mapper's image and the reference's (RGB, 0-255) when given."""
     import ppiray
     from vtkmodules.vtkCommonDataModel import vtkPlane
     from vtkmodules.vtkRenderingCore import vtkVolume, vtkWindowToImageFilter
@@ -313,6 +314,8 @@ def render_case(case, window, renderer, messages):
     image = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(float)
     text = (messages.GetOutput() or "")[before:]
     result = {"case": case["case"], "messages": text[-2000:], "lit": int((image > 0).sum())}
+    if images is not None:
+        images["mapper"] = image
     # Infinite coordinates stop the frame (nothing else is read); the unit
     # distance is read with the transfer function, when cells render.
     # A grid with non-finite (or degenerate) bounds may be culled by the
@@ -344,6 +347,8 @@ def render_case(case, window, renderer, messages):
         reference.Update()
         exact = vtk_to_numpy(reference.GetOutput().GetPointData().GetScalars())
         expected = 255.0 * np.clip(exact[:, :3], 0, 1)
+        if images is not None:
+            images["reference"] = expected
         covered = (exact[:, 3] > 0.5 / 255) | (image.max(axis=1) > 0)
         d = np.abs(image - expected)[covered]
         if d.size:

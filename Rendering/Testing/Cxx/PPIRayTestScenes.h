@@ -163,20 +163,21 @@ inline vtkSmartPointer<vtkUnstructuredGrid> VoxelsAsHexahedra(vtkUnstructuredGri
   return hexahedra;
 }
 
-inline VoxelBlock BlobVoxelBlock(int n)
+// The unit cube in n^3 voxels with point scalars `name` = f(x).
+inline VoxelBlock FieldVoxelBlock(int n, const Field& f, const char* name)
 {
   vtkNew<vtkImageData> image;
   image->SetDimensions(n + 1, n + 1, n + 1);
   image->SetSpacing(1.0 / n, 1.0 / n, 1.0 / n);
-  vtkNew<vtkDoubleArray> blob;
-  blob->SetName("blob");
+  vtkNew<vtkDoubleArray> values;
+  values->SetName(name);
   for (vtkIdType p = 0; p < image->GetNumberOfPoints(); ++p)
   {
     double x[3];
     image->GetPoint(p, x);
-    blob->InsertNextValue(Blob(x[0], x[1], x[2]));
+    values->InsertNextValue(f(x[0], x[1], x[2]));
   }
-  image->GetPointData()->SetScalars(blob);
+  image->GetPointData()->SetScalars(values);
   vtkNew<vtkAppendFilter> append;
   append->AddInputData(image);
   append->Update();
@@ -185,6 +186,11 @@ inline VoxelBlock BlobVoxelBlock(int n)
   block.Voxels = append->GetOutput();
   block.Hexahedra = VoxelsAsHexahedra(block.Voxels);
   return block;
+}
+
+inline VoxelBlock BlobVoxelBlock(int n)
+{
+  return FieldVoxelBlock(n, Blob, "blob");
 }
 
 // A smooth rainbow with smooth opacity over [lo, hi].

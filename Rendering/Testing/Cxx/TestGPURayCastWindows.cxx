@@ -5,7 +5,10 @@
 // rendered before it: a documented limit, reported once by a warning; a
 // second prop with the same mapper, as ParaView's LOD volume wraps one, is
 // not reported); onscreen and offscreen rendering switched between frames,
-// and the window closed and reopened (a new OpenGL context).
+// and the window closed and reopened (a new OpenGL context); one mapper
+// shown in two live windows in turn (each context gets its own GL objects,
+// the other's released), and a mapper destroyed while its window lives
+// (its GL objects released with it).
 //
 // Every image against the reference renderer at its viewport's size: every
 // covered pixel, p99 and max at most 1/255 (8-bit rounding 0.5, float, the
@@ -185,6 +188,57 @@ int TestGPURayCastWindows(int, char*[])
                 << "]\n";
       ++errors;
     }
+  }
+  // 6. One mapper in two live windows (two volumes sharing it), rendered in
+  // turn: GL objects belong to one context, so each switch releases them in
+  // the other and makes them again.
+  {
+    ppiray_test::Scene a(120, 110), b(100, 120);
+    ppiray_test::SmoothTransferFunction(a.Property, 0.0, 1.3, 0.8, 0.2);
+    ppiray_test::SmoothTransferFunction(b.Property, 0.0, 1.3, 0.8, 0.2);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    vtkNew<ppiray_test::MessageCollector> messages;
+    mapper->AddObserver(vtkCommand::WarningEvent, messages);
+    mapper->AddObserver(vtkCommand::ErrorEvent, messages);
+    a.Show(mapper, grid, { 2.5, -1.5, 1.8 }, { 0.5, 0.5, 0.5 });
+    b.Show(mapper, grid, { -1.5, 2.5, -0.8 }, { 0.5, 0.5, 0.5 });
+    for (int round = 0; round < 2; ++round)
+    {
+      for (auto* scene : { &a, &b })
+      {
+        scene->Window->Render();
+        const int* size = scene->Window->GetSize();
+        errors += Expect(scene == &a ? "two windows, first" : "two windows, second",
+          ppiray_test::CheckPixels(scene->Renderer, grid, scene->Property,
+            ppiray_test::ReadRGB(scene->Window), size[0], size[1]),
+          2000);
+      }
+    }
+    if (!messages->Warnings.empty() || !messages->Errors.empty())
+    {
+      std::cout << "FAILED: messages in two windows: [" << messages->Warnings << messages->Errors
+                << "]\n";
+      ++errors;
+    }
+  }
+  // 7. A mapper destroyed while its window lives, without
+  // ReleaseGraphicsResources: another mapper renders right after it.
+  {
+    ppiray_test::Scene scene(120, 110);
+    ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
+    {
+      vtkNew<vtkUnstructuredGridGPURayCastMapper> doomed;
+      scene.Show(doomed, grid, { 2.5, -1.5, 1.8 }, { 0.5, 0.5, 0.5 });
+      scene.Window->Render();
+      scene.Volume->SetMapper(nullptr);
+    }
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    scene.Show(mapper, grid, { 2.5, -1.5, 1.8 }, { 0.5, 0.5, 0.5 });
+    scene.Window->Render();
+    errors += Expect("after a mapper was destroyed",
+      ppiray_test::CheckPixels(
+        scene.Renderer, grid, scene.Property, ppiray_test::ReadRGB(scene.Window), 120, 110),
+      2000);
   }
   return errors ? 1 : 0;
 }
