@@ -327,6 +327,11 @@ def render_case(case, window, renderer, messages, images=None):
     if np.all(np.isfinite(np.array(case["points"], float))):  # a later mutation overwrote it
         required = [e for e in required if e != fatal] or [
             e for e in case["expect"] if e != fatal]
+    # A later mutation (duplicated points appended) may have made an id
+    # past the end valid again: expected only if one is still out of range.
+    count = len(case["points"])
+    if not any(i < 0 or i >= count for _, ids in case["cells"] for i in ids):
+        required = [e for e in required if e != "point ids outside"]
     missing = [e for e in required if e not in text and (e != "not positive" or result["lit"] > 0)]
     if missing:
         result["failure"] = "no message saying %s (mutations %s)" % (
@@ -374,6 +379,9 @@ def child(seed, first, count):
     window.SetMultiSamples(0)
     window.SetSize(SIZE, SIZE)
     renderer = vtkRenderer()
+    # No culling: a prop VTK finds too small on screen (coordinates x 1e-30)
+    # would never reach the mapper, which is what is under test.
+    renderer.GetCullers().RemoveAllItems()
     window.AddRenderer(renderer)
     for case in range(first, first + count):
         start = time.perf_counter()

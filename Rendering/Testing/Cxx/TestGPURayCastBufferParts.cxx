@@ -60,11 +60,10 @@ int Split(const char* what, vtkUnstructuredGrid* grid, int hexahedronMode, vtkId
   scene.Window->Render();
   int errors = Compare(what, scene, grid, unsplit);
   if (mapper->GetGPUMemorySize() != bytes || !messages->Errors.empty() ||
-    !messages->Warnings.empty())
+      !messages->Warnings.empty())
   {
     std::cout << "FAILED: " << what << ": " << mapper->GetGPUMemorySize() << " bytes on the GPU, "
-              << bytes << " unsplit; messages [" << messages->Errors << messages->Warnings
-              << "]\n";
+              << bytes << " unsplit; messages [" << messages->Errors << messages->Warnings << "]\n";
     ++errors;
   }
   // Back to one buffer per array: the same image again.
@@ -110,8 +109,8 @@ int TestGPURayCastBufferParts(int, char*[])
     }
     std::cout << "too many parts: [" << messages->Errors << "], " << lit << " lit values\n";
     if (messages->Errors.find("5184 texels need 52 buffer textures of at most 100") ==
-        std::string::npos ||
-      lit != 0)
+          std::string::npos ||
+        lit != 0)
     {
       std::cout << "FAILED: a mesh over the buffer limit is not refused with one clear error\n";
       ++errors;

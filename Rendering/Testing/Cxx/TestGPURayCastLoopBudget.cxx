@@ -62,8 +62,8 @@ int Check(const std::string& name, vtkUnstructuredGrid* grid,
   scene.Show(mapper, grid, { 1.6, 1.3, 2.2 }, { 0.5, 0.5, 0.5 });
   scene.Window->Render();
   const auto image = ppiray_test::ReadRGB(scene.Window);
-  const auto exact = ppiray_test::ReferenceRGB(
-    grid, scene.Property, scene.Renderer->GetActiveCamera(), Size, Size);
+  const auto exact =
+    ppiray_test::ReferenceRGB(grid, scene.Property, scene.Renderer->GetActiveCamera(), Size, Size);
   std::vector<double> d;
   int covered = 0;
   for (int p = 0; p < Size * Size; ++p)
@@ -82,8 +82,8 @@ int Check(const std::string& name, vtkUnstructuredGrid* grid,
   std::sort(d.begin(), d.end());
   const double p99 = d.empty() ? 0.0 : d[static_cast<size_t>(0.99 * (d.size() - 1))];
   const double max = d.empty() ? 0.0 : d.back();
-  std::cout << name << ": " << mapper->GetNumberOfContinuations() << " continuations, "
-            << covered << " pixels covered, p99 " << p99 << ", max " << max << " /255\n";
+  std::cout << name << ": " << mapper->GetNumberOfContinuations() << " continuations, " << covered
+            << " pixels covered, p99 " << p99 << ", max " << max << " /255\n";
   int errors = 0;
   // Bounds: both rounded to 8 bits (1) plus float rounding over thousands of
   // pieces per ray; a ray cut short is tens of levels dark.
