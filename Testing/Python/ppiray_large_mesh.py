@@ -1,0 +1,168 @@
+"""Module/run python Testing/Python/ppiray_large_mesh.py [--voxels N] [--size S] [--check S]
+
+A generated mesh far larger than the test meshes: the cube [-1, 1]^3 in N^3
+voxels, each split into six tetrahedra around its main diagonal (6 N^3
+tetrahedra: N = 189 gives 40.5 M), with the scalar
+s = sin(3x) cos(2y) + z^2 at the points, rendered by
+vtkUnstructuredGridGPURayCastMapper. Prints the build and upload time (first
+frame), the time of a second frame, the GPU bytes and the process's peak
+memory; then checks
+a small image (--check S pixels square, same camera) against the CPU
+reference renderer: p99 and max per channel, pixels covered, NaN. Not a
+ctest test (minutes and gigabytes); its numbers go in
+Documentation/hardening.md with the command that made them.
+"""
+import argparse
+import resource
+import sys
+import time
+
+import numpy as np
+
+
+def tetrahedral_block(n):
+    """The unstructured grid of n^3 voxels in [-1, 1]^3, 6 tetrahedra each."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import VTK_TETRA, vtkCellArray, vtkUnstructuredGrid
+    axis = np.linspace(-1.0, 1.0, n + 1)
+    z, y, x = np.meshgrid(axis, axis, axis, indexing="ij")
+    coordinates = np.stack([x.ravel(), y.ravel(), z.ravel()], axis=1)
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(coordinates.astype(np.float64), deep=1))
+    # Voxel corners: bit 0 x, bit 1 y, bit 2 z; the six tetrahedra around
+    # the diagonal 0-7 walk the corners through paths 0 -> a -> b -> 7.
+    i = np.arange(n)
+    k3, j3, i3 = np.meshgrid(i, i, i, indexing="ij")
+    base = (k3 * (n + 1) + j3) * (n + 1) + i3
+    offset = [0, 1, n + 1, n + 2, (n + 1) ** 2, (n + 1) ** 2 + 1,
+              (n + 1) ** 2 + n + 1, (n + 1) ** 2 + n + 2]
+    paths = [(0, 1, 3, 7), (0, 1, 5, 7), (0, 2, 3, 7), (0, 2, 6, 7), (0, 4, 5, 7), (0, 4, 6, 7)]
+    tets = np.empty((base.size, 6, 4), dtype=np.int64)
+    flat = base.ravel()
+    for t, path in enumerate(paths):
+        for c, corner in enumerate(path):
+            tets[:, t, c] = flat + offset[corner]
+    # Orientation: half the paths wind negatively; swap two corners there.
+    for t, path in enumerate(paths):
+        if t in (1, 2, 5):
+            tets[:, t, [1, 2]] = tets[:, t, [2, 1]]
+    tets = tets.reshape(-1, 4)
+    cells = vtkCellArray()
+    offsets = np.arange(0, 4 * len(tets) + 1, 4, dtype=np.int64)
+    cells.SetData(numpy_to_vtkIdTypeArray(offsets, deep=1),
+                  numpy_to_vtkIdTypeArray(tets.ravel(), deep=1))
+    grid = vtkUnstructuredGrid()
+    grid.SetPoints(points)
+    grid.SetCells(VTK_TETRA, cells)
+    s = np.sin(3.0 * coordinates[:, 0]) * np.cos(2.0 * coordinates[:, 1]) + coordinates[:, 2] ** 2
+    array = numpy_to_vtk(s.astype(np.float64), deep=1)
+    array.SetName("s")
+    grid.GetPointData().SetScalars(array)
+    return grid
+
+
+def peak_gigabytes():
+    """The process's peak resident memory so far."""
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1e6
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--voxels", type=int, default=189, help="N: 6 N^3 tetrahedra (189: 40.5 M)")
+    parser.add_argument("--size", type=int, default=512, help="image size for the timing")
+    parser.add_argument("--check", type=int, default=48, help="image size checked against the reference")
+    args = parser.parse_args()
+
+    import ppiray
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+    from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderWindow,
+                                             vtkRenderer, vtkVolume, vtkVolumeProperty,
+                                             vtkWindowToImageFilter)
+    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+    import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401
+
+    start = time.perf_counter()
+    grid = tetrahedral_block(args.voxels)
+    print("mesh: %d tetrahedra, %d points, generated in %.1f s; peak memory so far %.1f GB"
+          % (grid.GetNumberOfCells(), grid.GetNumberOfPoints(), time.perf_counter() - start,
+             peak_gigabytes()), flush=True)
+
+    lo, hi = grid.GetPointData().GetScalars().GetRange()
+    color = vtkColorTransferFunction()
+    color.AddRGBPoint(lo, 0.1, 0.2, 0.9)
+    color.AddRGBPoint(0.5 * (lo + hi), 0.2, 0.9, 0.3)
+    color.AddRGBPoint(hi, 0.95, 0.3, 0.1)
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(lo, 0.0)
+    opacity.AddPoint(hi, 0.8)
+    prop = vtkVolumeProperty()
+    prop.SetColor(color)
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(0.5)
+
+    mapper = ppiray.vtkUnstructuredGridGPURayCastMapper()
+    mapper.SetInputData(grid)
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    window = vtkRenderWindow()
+    window.SetMultiSamples(0)
+    window.SetSize(args.size, args.size)
+    renderer = vtkRenderer()
+    window.AddRenderer(renderer)
+    renderer.AddVolume(volume)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(2.5, -1.8, 2.0)
+    camera.SetFocalPoint(0.0, 0.0, 0.0)
+    renderer.ResetCamera()
+
+    start = time.perf_counter()
+    window.Render()
+    first = time.perf_counter() - start
+    start = time.perf_counter()
+    window.Render()
+    second = time.perf_counter() - start
+    print("%dx%d: first frame (build, upload, render) %.1f s, second frame %.2f s, %d peels, "
+          "%d continuations, %.2f GB on the GPU; peak memory so far %.1f GB"
+          % (args.size, args.size, first, second, mapper.GetNumberOfPeels(),
+             mapper.GetNumberOfContinuations(), mapper.GetGPUMemorySize() / 1e9,
+             peak_gigabytes()), flush=True)
+
+    window.SetSize(args.check, args.check)
+    window.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGB()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    image = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(float)
+    # The mapper's CPU and GPU copies go before the reference builds its own.
+    window.Finalize()
+    volume.SetMapper(None)
+    del grab, window, renderer, volume, mapper
+    reference = ppiray.vtkUnstructuredGridReferenceRenderer()
+    reference.SetInputData(grid)
+    reference.SetVolumeProperty(prop)
+    reference.SetCamera(camera)
+    reference.SetImageSize(args.check, args.check)
+    start = time.perf_counter()
+    reference.Update()
+    seconds = time.perf_counter() - start
+    exact = vtk_to_numpy(reference.GetOutput().GetPointData().GetScalars())
+    nan = int(np.isnan(exact).any(axis=1).sum())
+    expected = 255.0 * np.clip(np.nan_to_num(exact[:, :3]), 0, 1)
+    covered = (exact[:, 3] > 0.5 / 255) | (image.max(axis=1) > 0)
+    d = np.abs(image - expected)[covered]
+    p99 = float(np.percentile(d, 99)) if d.size else 0.0
+    print("check %dx%d against the reference (%.0f s): %d pixels covered, p99 %.2f, max %.2f /255, "
+          "%d NaN" % (args.check, args.check, seconds, int(covered.sum()), p99,
+                      float(d.max()) if d.size else 0.0, nan))
+    print("peak memory of the process: %.1f GB" % peak_gigabytes())
+    ok = covered.sum() > args.check ** 2 // 4 and p99 <= 1.0 and nan == 0
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
