@@ -1,10 +1,10 @@
 #include "ppirayValidPointIds.h"
 
 #include "ppirayConformingTetrahedra.h"
+#include "ppirayVTKCompatibility.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
-#include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -50,22 +50,9 @@ vtkSmartPointer<vtkUnstructuredGrid> EmptyCellsWithInvalidPointIds(
     types->SetValue(c, invalid[c] ? VTK_EMPTY_CELL : grid->GetCellType(c));
   }
   // Polyhedra keep their faces; an emptied one has none.
-  vtkSmartPointer<vtkIdTypeArray> faceLocations;
-  if (grid->GetFaceLocations())
-  {
-    faceLocations = vtkSmartPointer<vtkIdTypeArray>::New();
-    faceLocations->DeepCopy(grid->GetFaceLocations());
-    for (vtkIdType c = 0; c < static_cast<vtkIdType>(invalid.size()); ++c)
-    {
-      if (invalid[c] && c < faceLocations->GetNumberOfValues())
-      {
-        faceLocations->SetValue(c, -1);
-      }
-    }
-  }
   auto valid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   valid->ShallowCopy(grid);
-  valid->SetCells(types, kept, faceLocations, grid->GetFaces());
+  compat::SetCellsKeepingPolyhedra(valid, grid, types, kept, invalid);
   return valid;
 }
 }

@@ -52,8 +52,12 @@ function (ppiray_add_python_test name script)
   endif ()
   add_test(NAME "${name}"
     COMMAND "${PPIRAY_PYTHON_EXECUTABLE}" "${script}" ${ARGN})
+  set(ppiray_vtk_pythonpath "")
+  if (PPIRAY_VTK_PYTHONPATH)
+    set(ppiray_vtk_pythonpath ":${PPIRAY_VTK_PYTHONPATH}")
+  endif ()
   set(environment
-    "PYTHONPATH=${CMAKE_BINARY_DIR}/${PPIRAY_PYTHON_DESTINATION}"
+    "PYTHONPATH=${CMAKE_BINARY_DIR}/${PPIRAY_PYTHON_DESTINATION}${ppiray_vtk_pythonpath}"
     "LD_LIBRARY_PATH=${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
   if (PPIRAY_SANITIZE)
     # The interpreter is not instrumented: the ASan runtime must come first.

@@ -1,11 +1,12 @@
 #include "vtkPPIRayBufferTexture.h"
 
+#include "ppirayVTKCompatibility.h"
 #include "vtkNew.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include PPIRAY_VTK_OPENGL_HEADER
 
 #include <algorithm>
 #include <sstream>

@@ -1,5 +1,6 @@
 #include "vtkPPIRayDepthPeeling.h"
 
+#include "ppirayVTKCompatibility.h"
 #include "vtkObject.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -13,7 +14,7 @@
 #include "vtkSetGet.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include PPIRAY_VTK_OPENGL_HEADER
 
 #include <algorithm>
 #include <string>
@@ -28,6 +29,22 @@
 
 namespace
 {
+// A full-screen pass: every fragment written, none culled or depth-tested,
+// blended or not.
+void UseFullScreenState(vtkOpenGLState* state, bool blend)
+{
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_CULL_FACE);
+  if (blend)
+  {
+    state->vtkglEnable(GL_BLEND);
+  }
+  else
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
+}
+
 // A render target read texel by texel.
 void NearestClamped(vtkTextureObject* texture, vtkOpenGLRenderWindow* context)
 {
@@ -346,9 +363,7 @@ void vtkPPIRayDepthPeeling::ClearEntries(vtkOpenGLRenderWindow* context)
   fbo->ActivateDrawBuffers(1);
   state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_CULL_FACE);
-  state->vtkglDisable(GL_BLEND);
+  UseFullScreenState(state, false);
 }
 
 //------------------------------------------------------------------------------
@@ -464,8 +479,7 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
   fbo->AddColorAttachment(1, this->Exit[next]);
   fbo->AddColorAttachment(2, this->Continuation[next]);
   fbo->ActivateDrawBuffers(3);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_CULL_FACE);
+  UseFullScreenState(state, false);
 
   vtkShaderProgram* program = march.Program;
   context->GetShaderCache()->ReadyShaderProgram(program);
@@ -511,9 +525,7 @@ void vtkPPIRayDepthPeeling::Composite(vtkOpenGLRenderWindow* context, const Fram
 {
   vtkOpenGLState* state = context->GetState();
   state->vtkglViewport(frame.X0, frame.Y0, frame.Width, frame.Height);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_CULL_FACE);
-  state->vtkglEnable(GL_BLEND);
+  UseFullScreenState(state, true);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   state->vtkglDepthMask(GL_FALSE);
   vtkShaderProgram* program = this->CompositeQuad->Program;

@@ -12,8 +12,9 @@
 #ifndef vtkPPIRayPeelingStateRAII_h
 #define vtkPPIRayPeelingStateRAII_h
 
-#include "vtkOpenGLState.h" // for vtkOpenGLState
-#include "vtk_glew.h"       // for GL enums
+#include "ppirayVTKCompatibility.h"
+#include "vtkOpenGLState.h"       // for vtkOpenGLState
+#include PPIRAY_VTK_OPENGL_HEADER // for GL enums
 
 class vtkPPIRayPeelingStateRAII
 {

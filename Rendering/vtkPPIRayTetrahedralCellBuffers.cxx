@@ -1,10 +1,10 @@
 #include "vtkPPIRayTetrahedralCellBuffers.h"
 
-#include "vtkCellTypes.h"
 #include "vtkShaderProgram.h"
 #include "vtkUnstructuredGrid.h"
 
 #include "ppirayPlaneSection.h"
+#include "ppirayVTKCompatibility.h"
 
 #include "march_common_fs.h"
 #include "march_fs.h"
@@ -20,7 +20,7 @@ std::string CellTypesMessage(const std::vector<vtkIdType>& typesAndCounts)
   for (size_t i = 0; i < typesAndCounts.size(); i += 2)
   {
     message << (i ? ", " : "") << typesAndCounts[i + 1] << " "
-            << vtkCellTypes::GetClassNameFromTypeId(static_cast<int>(typesAndCounts[i]));
+            << ppiray::compat::CellClassName(static_cast<int>(typesAndCounts[i]));
   }
   return message.str();
 }

@@ -5,8 +5,13 @@
 // per second, GPU bytes per tetrahedron, and the speed-up of PPIRay.
 //
 //   ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]
-//                   [--views N] [--peer-views N] [--inside]
+//                   [--views N] [--peer-views N] [--inside] [--check N]
 //                   [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]
+//
+// --check N: after its frames, each PPIRay mapper renders the last view at
+// N x N and every pixel is compared with the CPU reference renderer (p99 and
+// max per channel, pixels covered, NaN); the exit status is 1 when p99 or
+// max exceeds 1/255 or a pixel is NaN (the bound of the test suite).
 //
 // Default scene: vtkRTAnalyticSource over [-32, 32]^3 split into 1.31 M
 // tetrahedra (vtkDataSetTriangleFilter), 512x512, 8 views. --inside: the
@@ -35,6 +40,8 @@
 
 #include "ppirayPlaneSection.h"
 
+#include "PPIRayPixelCheck.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -57,6 +64,7 @@ struct Options
   int PeerViews = 2;
   std::string Mappers = "ppiray,pt,raycast";
   bool Inside = false;
+  int Check = 0;
 };
 
 struct Row
@@ -65,6 +73,7 @@ struct Row
   double Ms = 0;
   int Frames = 0;
   double GPUBytes = -1;
+  bool CheckFailed = false;
 };
 
 vtkSmartPointer<vtkUnstructuredGrid> LoadScene(const Options& o)
@@ -161,6 +170,19 @@ Row Measure(const std::string& name, vtkUnstructuredGridVolumeMapper* mapper,
   if (auto* ours = vtkUnstructuredGridGPURayCastMapper::SafeDownCast(mapper))
   {
     row.GPUBytes = static_cast<double>(ours->GetGPUMemorySize());
+    if (o.Check > 0)
+    {
+      window->SetSize(o.Check, o.Check);
+      window->Render();
+      const auto check = ppiray_test::CheckPixels(
+        renderer, grid, property, ppiray_test::ReadRGB(window), o.Check, o.Check);
+      row.CheckFailed =
+        check.NaNPixels > 0 || check.P99 > 1.0 || check.MaxDifference > 1.0 || check.Pixels == 0;
+      std::printf("pixel check %s %dx%d against the reference: %d pixels covered, p99 %.2f, max "
+                  "%.2f /255, %d NaN: %s\n",
+        name.c_str(), o.Check, o.Check, check.Pixels, check.P99, check.MaxDifference,
+        check.NaNPixels, row.CheckFailed ? "FAILED" : "passed");
+    }
   }
   return row;
 }
@@ -197,6 +219,10 @@ int main(int argc, char* argv[])
     {
       o.Inside = true;
     }
+    else if (arg == "--check")
+    {
+      o.Check = std::stoi(next());
+    }
     else if (arg == "--mappers")
     {
       o.Mappers = next();
@@ -205,7 +231,7 @@ int main(int argc, char* argv[])
     {
       std::cout
         << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]"
-           " [--views N] [--peer-views N] [--inside]"
+           " [--views N] [--peer-views N] [--inside] [--check N]"
            " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]\n\n"
            "Frame time of PPIRay against VTK's unstructured volume mappers on one scene, same\n"
            "run: median ms per frame over an orbit of views after a warm-up frame.\n"
@@ -217,6 +243,8 @@ int main(int argc, char* argv[])
            "  --peer-views N      views for the CPU mappers raycast, zsweep (default 2)\n"
            "  --inside            camera at the mesh's centre, turning about itself (default "
            "outside)\n"
+           "  --check N           PPIRay's last view at NxN against the CPU reference; exit 1\n"
+           "                      past 1/255 (p99 or max) or with NaN\n"
            "  --mappers LIST      comma-separated (default ppiray,pt,raycast): ppiray (partial\n"
            "                      pre-integration), ppiray-exact, ppiray-full, ppiray-average,\n"
            "                      pt (vtkProjectedTetrahedraMapper), raycast\n"
@@ -316,12 +344,14 @@ int main(int argc, char* argv[])
   }
 
   double ours = 0;
+  bool checkFailed = false;
   for (const Row& r : rows)
   {
     if (r.Name == "PPIRay PARTIAL_PRE_INTEGRATION")
     {
       ours = r.Ms;
     }
+    checkFailed = checkFailed || r.CheckFailed;
   }
   std::printf(
     "\n| mapper | ms/frame (median) | frames | M tets/s | GPU B/tet | PPIRay speed-up |\n");
@@ -341,5 +371,5 @@ int main(int argc, char* argv[])
     std::printf("| %s | %.1f | %d | %.2f | %s | %s |\n", r.Name.c_str(), r.Ms, r.Frames,
       tets / r.Ms / 1000.0, gpu, speedup);
   }
-  return 0;
+  return checkFailed ? 1 : 0;
 }

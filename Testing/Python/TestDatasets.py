@@ -23,8 +23,6 @@ import os
 import sys
 import time
 
-import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 
@@ -32,7 +30,8 @@ import ppiray
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import ppiray_datasets  # noqa: E402
-from ppiray_scene import scene, volume_property, window_rgb  # noqa: E402
+from ppiray_scene import (compare_with_reference, reference_rgba, scene,  # noqa: E402
+                          volume_property, window_rgb)
 
 TRIANGULATED = "vtkDataSetTriangleFilter"
 
@@ -88,26 +87,9 @@ def compare(grid, size):
     peels = mapper.GetNumberOfPeels()
     camera = renderer.GetActiveCamera()
     window.Finalize()  # one X connection at a time, whatever the number of cases
-    reference = ppiray.vtkUnstructuredGridReferenceRenderer()
-    reference.SetInputData(grid)
-    reference.SetVolumeProperty(prop)
-    reference.SetCamera(camera)
-    reference.SetImageSize(size, size)
-    start = time.perf_counter()
-    reference.Update()
-    seconds = time.perf_counter() - start
-    rgba = vtk_to_numpy(reference.GetOutput().GetPointData().GetScalars())
-    nan = int(np.isnan(rgba).any(axis=1).sum())
-    exact = np.clip(np.nan_to_num(rgba[:, :3]), 0, 1) * 255.0
-    covered = (np.rint(exact) >= 1).any(axis=1) | (gpu >= 1).any(axis=1)
-    signed = (gpu - exact)[covered]
-    d = np.abs(signed)
-    return dict(cells="%d %s" % (cells, kind), peels=peels, ms=ms,
-                ref_s=seconds, covered=int(covered.sum()), nan=nan,
-                p99=float(np.percentile(d, 99)) if d.size else 0.0,
-                max=float(d.max()) if d.size else 0.0,
-                above8=int((d.max(axis=1) > 8).sum()) if d.size else 0,
-                brighter=float(signed.max()) if d.size else 0.0)
+    rgba, seconds = reference_rgba(grid, prop, camera, size)
+    return dict(cells="%d %s" % (cells, kind), peels=peels, ms=ms, ref_s=seconds,
+                **compare_with_reference(gpu, rgba))
 
 
 def check(name, label, m):

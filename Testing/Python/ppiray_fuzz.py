@@ -280,8 +280,8 @@ def render_case(case, window, renderer, messages, images=None):
     the mapper's image and the reference's (RGB, 0-255) when given."""
     import ppiray
     from vtkmodules.vtkCommonDataModel import vtkPlane
-    from vtkmodules.vtkRenderingCore import vtkVolume, vtkWindowToImageFilter
-    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkRenderingCore import vtkVolume
+    from ppiray_scene import compare_with_reference, reference_rgba, window_rgb
     grid, prop = build(case)
     Mapper = ppiray.vtkUnstructuredGridGPURayCastMapper
     mapper = Mapper()
@@ -306,12 +306,7 @@ def render_case(case, window, renderer, messages, images=None):
     place_camera(renderer, case, grid)
     before = len(messages.GetOutput() or "")
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    image = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(float)
+    image = window_rgb(window)
     text = (messages.GetOutput() or "")[before:]
     result = {"case": case["case"], "messages": text[-2000:], "lit": int((image > 0).sum())}
     if images is not None:
@@ -340,29 +335,17 @@ def render_case(case, window, renderer, messages, images=None):
     # approximation the mapper announces (a warning): not compared.
     truncated = "control points to stay within" in text
     if clean_for_reference(case) and grid.GetNumberOfCells() and not truncated:
-        reference = ppiray.vtkUnstructuredGridReferenceRenderer()
-        reference.SetInputData(grid)
-        reference.SetVolumeProperty(prop)
-        reference.SetCamera(renderer.GetActiveCamera())
-        reference.SetImageSize(SIZE, SIZE)
-        reference.SetBlendMode(m["blend"])
-        reference.SetLights(renderer.GetLights())
-        if planes:
-            reference.SetClippingPlanes(mapper.GetClippingPlanes())
-        reference.Update()
-        exact = vtk_to_numpy(reference.GetOutput().GetPointData().GetScalars())
-        expected = 255.0 * np.clip(exact[:, :3], 0, 1)
+        rgba, _ = reference_rgba(grid, prop, renderer.GetActiveCamera(), SIZE, m["blend"],
+                                 renderer.GetLights(),
+                                 mapper.GetClippingPlanes() if planes else None)
         if images is not None:
-            images["reference"] = expected
-        covered = (exact[:, 3] > 0.5 / 255) | (image.max(axis=1) > 0)
-        d = np.abs(image - expected)[covered]
-        if d.size:
-            far = int((d.max(axis=1) > 8).sum())
-            p99 = float(np.percentile(d, 99))
-            result["reference"] = [int(covered.sum()), p99, float(d.max()), far]
-            if p99 > 2.0 or far > max(3, covered.sum() // 100):
+            images["reference"] = 255.0 * np.clip(rgba[:, :3], 0, 1)
+        c = compare_with_reference(image, rgba)
+        if c["covered"]:
+            result["reference"] = [c["covered"], c["p99"], c["max"], c["above8"]]
+            if c["p99"] > 2.0 or c["above8"] > max(3, c["covered"] // 100):
                 result["failure"] = "differs from the reference: %d pixels, p99 %.1f, max %.0f, " \
-                    "%d above 8/255" % (covered.sum(), p99, d.max(), far)
+                    "%d above 8/255" % (c["covered"], c["p99"], c["max"], c["above8"])
     volume.SetMapper(None)
     renderer.RemoveAllViewProps()
     return result

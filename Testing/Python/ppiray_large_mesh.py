@@ -4,7 +4,8 @@ A generated mesh far larger than the test meshes: the cube [-1, 1]^3 in N^3
 voxels, each split into six tetrahedra around its main diagonal (6 N^3
 tetrahedra: N = 189 gives 40.5 M), with the scalar
 s = sin(3x) cos(2y) + z^2 at the points, rendered by
-vtkUnstructuredGridGPURayCastMapper. Prints the build and upload time (first
+vtkUnstructuredGridGPURayCastMapper with the demo's transfer function
+(ppiray_scene.volume_property) at unit distance 0.5. Prints the build and upload time (first
 frame), the time of a second frame, the GPU bytes and the process's peak
 memory; then checks
 a small image (--check S pixels square, same camera) against the CPU
@@ -75,13 +76,8 @@ def main():
     args = parser.parse_args()
 
     import ppiray
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
-    from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderWindow,
-                                             vtkRenderer, vtkVolume, vtkVolumeProperty,
-                                             vtkWindowToImageFilter)
-    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
-    import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401
+    from vtkmodules.vtkRenderingCore import vtkRenderWindow, vtkRenderer, vtkVolume
+    from ppiray_scene import compare_with_reference, reference_rgba, volume_property, window_rgb
 
     start = time.perf_counter()
     grid = tetrahedral_block(args.voxels)
@@ -89,17 +85,7 @@ def main():
           % (grid.GetNumberOfCells(), grid.GetNumberOfPoints(), time.perf_counter() - start,
              peak_gigabytes()), flush=True)
 
-    lo, hi = grid.GetPointData().GetScalars().GetRange()
-    color = vtkColorTransferFunction()
-    color.AddRGBPoint(lo, 0.1, 0.2, 0.9)
-    color.AddRGBPoint(0.5 * (lo + hi), 0.2, 0.9, 0.3)
-    color.AddRGBPoint(hi, 0.95, 0.3, 0.1)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(lo, 0.0)
-    opacity.AddPoint(hi, 0.8)
-    prop = vtkVolumeProperty()
-    prop.SetColor(color)
-    prop.SetScalarOpacity(opacity)
+    prop = volume_property(grid)
     prop.SetScalarOpacityUnitDistance(0.5)
 
     mapper = ppiray.vtkUnstructuredGridGPURayCastMapper()
@@ -132,35 +118,17 @@ def main():
 
     window.SetSize(args.check, args.check)
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    image = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).astype(float)
+    image = window_rgb(window)
     # The mapper's CPU and GPU copies go before the reference builds its own.
     window.Finalize()
     volume.SetMapper(None)
-    del grab, window, renderer, volume, mapper
-    reference = ppiray.vtkUnstructuredGridReferenceRenderer()
-    reference.SetInputData(grid)
-    reference.SetVolumeProperty(prop)
-    reference.SetCamera(camera)
-    reference.SetImageSize(args.check, args.check)
-    start = time.perf_counter()
-    reference.Update()
-    seconds = time.perf_counter() - start
-    exact = vtk_to_numpy(reference.GetOutput().GetPointData().GetScalars())
-    nan = int(np.isnan(exact).any(axis=1).sum())
-    expected = 255.0 * np.clip(np.nan_to_num(exact[:, :3]), 0, 1)
-    covered = (exact[:, 3] > 0.5 / 255) | (image.max(axis=1) > 0)
-    d = np.abs(image - expected)[covered]
-    p99 = float(np.percentile(d, 99)) if d.size else 0.0
+    del window, renderer, volume, mapper
+    rgba, seconds = reference_rgba(grid, prop, camera, args.check)
+    c = compare_with_reference(image, rgba)
     print("check %dx%d against the reference (%.0f s): %d pixels covered, p99 %.2f, max %.2f /255, "
-          "%d NaN" % (args.check, args.check, seconds, int(covered.sum()), p99,
-                      float(d.max()) if d.size else 0.0, nan))
+          "%d NaN" % (args.check, args.check, seconds, c["covered"], c["p99"], c["max"], c["nan"]))
     print("peak memory of the process: %.1f GB" % peak_gigabytes())
-    ok = covered.sum() > args.check ** 2 // 4 and p99 <= 1.0 and nan == 0
+    ok = c["covered"] > args.check ** 2 // 4 and c["p99"] <= 1.0 and c["nan"] == 0
     return 0 if ok else 1
 
 

@@ -3,7 +3,9 @@ tetrahedral .vtu, a cool-warm colour map and an opacity ramp over the scalar
 range, unit distance 1/20 of the diagonal, a three-quarter view.
 """
 import json
+import time
 
+import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
@@ -189,3 +191,46 @@ def read_png(path):
     return vtk_to_numpy(image.GetPointData().GetScalars())[:, :3].astype(float)
 
 
+
+
+def reference_rgba(grid, prop, camera, size, blend_mode=None, lights=None, planes=None):
+    """The CPU reference renderer's image of `grid` seen by `camera` at
+    size x size (or (width, height)): float RGBA, pixels x 4, rows from the
+    bottom; and the seconds it took."""
+    import ppiray
+    width, height = size if isinstance(size, (tuple, list)) else (size, size)
+    reference = ppiray.vtkUnstructuredGridReferenceRenderer()
+    reference.SetInputData(grid)
+    reference.SetVolumeProperty(prop)
+    reference.SetCamera(camera)
+    reference.SetImageSize(width, height)
+    if blend_mode is not None:
+        reference.SetBlendMode(blend_mode)
+    if lights is not None:
+        reference.SetLights(lights)
+    if planes is not None:
+        reference.SetClippingPlanes(planes)
+    start = time.perf_counter()
+    reference.Update()
+    seconds = time.perf_counter() - start
+    return vtk_to_numpy(reference.GetOutput().GetPointData().GetScalars()), seconds
+
+
+def compare_with_reference(image, rgba):
+    """Per-channel differences in 1/255 between an 8-bit RGB image (pixels x
+    3) and the reference's RGBA, over the covered pixels (either image shows
+    something: reference alpha above 0.5/255, or a channel of either at least
+    1/255 once rounded). Returns covered, nan (reference pixels with NaN),
+    p99, max, above8 (pixels with a channel off by more than 8/255) and
+    brighter (the largest signed excess of the image)."""
+    nan = int(np.isnan(rgba).any(axis=1).sum())
+    exact = 255.0 * np.clip(np.nan_to_num(rgba[:, :3]), 0, 1)
+    alpha = np.nan_to_num(rgba[:, 3])
+    covered = (alpha > 0.5 / 255) | (np.rint(exact) >= 1).any(axis=1) | (image >= 1).any(axis=1)
+    signed = (image - exact)[covered]
+    d = np.abs(signed)
+    return dict(covered=int(covered.sum()), nan=nan,
+                p99=float(np.percentile(d, 99)) if d.size else 0.0,
+                max=float(d.max()) if d.size else 0.0,
+                above8=int((d.max(axis=1) > 8).sum()) if d.size else 0,
+                brighter=float(signed.max()) if d.size else 0.0)

@@ -101,6 +101,21 @@ inline int ExpectCoverage(const PixelCheck& check, int minimumPixels)
   }
   return 0;
 }
+
+// ExpectCoverage, and 1 more if p99 or max exceeds the suite's bound against
+// the reference: 1/255 (8-bit rounding 0.5, float, the 0.1/255
+// transfer-function tolerance).
+inline int ExpectReference(const char* what, const PixelCheck& check, int minimumPixels)
+{
+  std::printf("%s: ", what);
+  int errors = ExpectCoverage(check, minimumPixels);
+  if (check.P99 > 1.0 || check.MaxDifference > 1.0)
+  {
+    std::printf("FAILED: %s differs from the reference\n", what);
+    ++errors;
+  }
+  return errors;
+}
 }
 
 #endif

@@ -260,7 +260,10 @@ struct Scene
   vtkNew<vtkVolumeProperty> Property;
   Scene(int width = 300, int height = 300)
   {
-    if (void* display = SharedDisplay())
+    // Only an X window takes an X connection (EGL and OSMesa windows have
+    // their own display handles).
+    void* display = this->Window->IsA("vtkXOpenGLRenderWindow") ? SharedDisplay() : nullptr;
+    if (display)
     {
       this->Window->SetDisplayId(display);
     }

@@ -8,7 +8,9 @@
 // and the window closed and reopened (a new OpenGL context); one mapper
 // shown in two live windows in turn (each context gets its own GL objects,
 // the other's released), and a mapper destroyed while its window lives
-// (its GL objects released with it).
+// (its GL objects released with it: every texture, buffer, framebuffer,
+// renderbuffer, query and vertex array alive in the context counted before
+// it rendered and after it was deleted).
 //
 // Every image against the reference renderer at its viewport's size: every
 // covered pixel, p99 and max at most 1/255 (8-bit rounding 0.5, float, the
@@ -19,6 +21,10 @@
 #include "vtkCamera.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
+#include "ppirayVTKCompatibility.h"
+#include PPIRAY_VTK_OPENGL_HEADER
+
+#include <array>
 #include <iostream>
 #include <vector>
 
@@ -37,17 +43,31 @@ std::vector<unsigned char> Crop(
   return part;
 }
 
-int Expect(const char* what, const ppiray_test::PixelCheck& check, int minimumPixels)
+// The OpenGL objects alive in the current context among the names
+// 1..maxName, by kind: textures, buffers, framebuffers, renderbuffers, queries,
+// vertex arrays (a generated name is an object once bound or begun).
+std::array<int, 6> CountGLObjects(GLuint maxName)
 {
-  std::cout << what << ": ";
-  int errors = ppiray_test::ExpectCoverage(check, minimumPixels);
-  if (check.P99 > 1.0 || check.MaxDifference > 1.0)
+  std::array<int, 6> count{};
+  for (GLuint name = 1; name <= maxName; ++name)
   {
-    std::cout << "FAILED: " << what << " differs from the reference\n";
-    ++errors;
+    count[0] += glIsTexture(name) ? 1 : 0;
+    count[1] += glIsBuffer(name) ? 1 : 0;
+    count[2] += glIsFramebuffer(name) ? 1 : 0;
+    count[3] += glIsRenderbuffer(name) ? 1 : 0;
+    count[4] += glIsQuery(name) ? 1 : 0;
+    count[5] += glIsVertexArray(name) ? 1 : 0;
   }
-  return errors;
+  return count;
 }
+
+void PrintGLObjects(const char* what, const std::array<int, 6>& count)
+{
+  std::cout << what << ": " << count[0] << " textures, " << count[1] << " buffers, " << count[2]
+            << " framebuffers, " << count[3] << " renderbuffers, " << count[4] << " queries, "
+            << count[5] << " vertex arrays\n";
+}
+
 }
 
 int TestGPURayCastWindows(int, char*[])
@@ -65,13 +85,13 @@ int TestGPURayCastWindows(int, char*[])
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
     scene.Show(mapper, grid, { 2.5, -1.5, 1.8 }, { 0.5, 0.5, 0.5 });
     scene.Window->Render();
-    errors += Expect("120x120",
+    errors += ppiray_test::ExpectReference("120x120",
       ppiray_test::CheckPixels(
         scene.Renderer, grid, scene.Property, ppiray_test::ReadRGB(scene.Window), 120, 120),
       2000);
     scene.Window->SetSize(170, 130);
     scene.Window->Render();
-    errors += Expect("resized to 170x130",
+    errors += ppiray_test::ExpectReference("resized to 170x130",
       ppiray_test::CheckPixels(
         scene.Renderer, grid, scene.Property, ppiray_test::ReadRGB(scene.Window), 170, 130),
       2000);
@@ -99,11 +119,11 @@ int TestGPURayCastWindows(int, char*[])
     second->ResetCamera();
     scene.Window->Render();
     const auto image = ppiray_test::ReadRGB(scene.Window);
-    errors += Expect("left viewport",
+    errors += ppiray_test::ExpectReference("left viewport",
       ppiray_test::CheckPixels(
         scene.Renderer, grid, scene.Property, Crop(image, 240, 0, 0, 120, 120), 120, 120),
       2000);
-    errors += Expect("right viewport",
+    errors += ppiray_test::ExpectReference("right viewport",
       ppiray_test::CheckPixels(
         second, grid, scene.Property, Crop(image, 240, 120, 0, 120, 120), 120, 120),
       2000);
@@ -170,7 +190,7 @@ int TestGPURayCastWindows(int, char*[])
     auto check = [&](const char* what)
     {
       scene.Window->Render();
-      errors += Expect(what,
+      errors += ppiray_test::ExpectReference(what,
         ppiray_test::CheckPixels(
           scene.Renderer, grid, scene.Property, ppiray_test::ReadRGB(scene.Window), 120, 110),
         2000);
@@ -208,10 +228,11 @@ int TestGPURayCastWindows(int, char*[])
       {
         scene->Window->Render();
         const int* size = scene->Window->GetSize();
-        errors += Expect(scene == &a ? "two windows, first" : "two windows, second",
-          ppiray_test::CheckPixels(scene->Renderer, grid, scene->Property,
-            ppiray_test::ReadRGB(scene->Window), size[0], size[1]),
-          2000);
+        errors +=
+          ppiray_test::ExpectReference(scene == &a ? "two windows, first" : "two windows, second",
+            ppiray_test::CheckPixels(scene->Renderer, grid, scene->Property,
+              ppiray_test::ReadRGB(scene->Window), size[0], size[1]),
+            2000);
       }
     }
     if (!messages->Warnings.empty() || !messages->Errors.empty())
@@ -235,10 +256,55 @@ int TestGPURayCastWindows(int, char*[])
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
     scene.Show(mapper, grid, { 2.5, -1.5, 1.8 }, { 0.5, 0.5, 0.5 });
     scene.Window->Render();
-    errors += Expect("after a mapper was destroyed",
+    errors += ppiray_test::ExpectReference("after a mapper was destroyed",
       ppiray_test::CheckPixels(
         scene.Renderer, grid, scene.Property, ppiray_test::ReadRGB(scene.Window), 120, 110),
       2000);
+  }
+  // 8. The GL objects of a mapper destroyed without ReleaseGraphicsResources
+  // are all gone: counted in the context before it rendered and after it was
+  // deleted (shader programs stay in the window's shader cache, as for VTK's
+  // mappers).
+  {
+    ppiray_test::Scene scene(120, 110);
+    ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
+    scene.Renderer->RemoveVolume(scene.Volume);
+    scene.Window->Render();
+    const GLuint maxName = 4096;
+    scene.Window->MakeCurrent();
+    const auto before = CountGLObjects(maxName);
+    std::array<int, 6> during{};
+    {
+      vtkNew<vtkUnstructuredGridGPURayCastMapper> doomed;
+      scene.Renderer->AddVolume(scene.Volume);
+      scene.Show(doomed, grid, { 2.5, -1.5, 1.8 }, { 0.5, 0.5, 0.5 });
+      scene.Window->Render();
+      errors += ppiray_test::ExpectReference("counted mapper",
+        ppiray_test::CheckPixels(
+          scene.Renderer, grid, scene.Property, ppiray_test::ReadRGB(scene.Window), 120, 110),
+        2000);
+      scene.Window->MakeCurrent();
+      during = CountGLObjects(maxName);
+      scene.Renderer->RemoveVolume(scene.Volume);
+      scene.Volume->SetMapper(nullptr);
+    }
+    scene.Window->MakeCurrent();
+    const auto after = CountGLObjects(maxName);
+    PrintGLObjects("GL objects before the mapper", before);
+    PrintGLObjects("GL objects while it renders", during);
+    PrintGLObjects("GL objects after its destructor", after);
+    // The count must see the mapper's objects (at least its textures,
+    // framebuffer and query) for its return to mean anything.
+    if (during[0] <= before[0] || during[2] <= before[2] || during[4] <= before[4])
+    {
+      std::cout << "FAILED: the mapper's GL objects were not counted\n";
+      ++errors;
+    }
+    if (after != before)
+    {
+      std::cout << "FAILED: GL objects left after the mapper's destructor\n";
+      ++errors;
+    }
   }
   return errors ? 1 : 0;
 }
