@@ -1,8 +1,9 @@
 """PPIRay: GPU ray casting of unstructured meshes with partial pre-integration.
 
 Import after (or instead of) the VTK modules you use; the wrapped classes live
-in ``ppiray.ppirayFilters`` and ``ppiray.ppirayRendering`` and are re-exported
-here.
+in ``ppiray.ppirayFilters``, ``ppiray.ppirayRendering`` and, when PPIRay was
+built with CGAL >= 6.1, ``ppiray.ppirayConvexify`` (GPL through CGAL), and are
+re-exported here.
 """
 
 # The wrapped modules link against these VTK modules: import them first so that
@@ -13,3 +14,7 @@ import vtkmodules.vtkRenderingVolume  # noqa: F401
 
 from .ppirayFilters import *  # noqa: F401,F403
 from .ppirayRendering import *  # noqa: F401,F403
+try:
+    from .ppirayConvexify import *  # noqa: F401,F403
+except ImportError:
+    pass  # built without CGAL >= 6.1

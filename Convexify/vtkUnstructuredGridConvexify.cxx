@@ -1,0 +1,238 @@
+#include "vtkUnstructuredGridConvexify.h"
+
+#include "ppirayConformingTetrahedra.h"
+#include "ppirayImaginaryTetrahedra.h"
+#include "ppirayValidPointIds.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkTimerLog.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridCellAdjacency.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+vtkStandardNewMacro(vtkUnstructuredGridConvexify);
+
+namespace
+{
+// Every array of `data` grown to `count` tuples, the new ones holding each
+// component's minimum over the old ones (0 where it has none).
+void ExtendWithMinimum(vtkDataSetAttributes* data, vtkIdType count)
+{
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = data->GetArray(a);
+    if (!array)
+    {
+      continue; // string and other non-numeric arrays keep their tuples
+    }
+    const int components = array->GetNumberOfComponents();
+    std::vector<double> minimum(components, 0.0);
+    for (int c = 0; c < components; ++c)
+    {
+      double range[2];
+      array->GetRange(range, c);
+      minimum[c] = range[0] <= range[1] ? range[0] : 0.0;
+    }
+    for (vtkIdType i = array->GetNumberOfTuples(); i < count; ++i)
+    {
+      array->InsertTuple(i, minimum.data());
+    }
+  }
+}
+
+bool AllFinite(vtkPoints* points)
+{
+  double p[3];
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    points->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+int vtkUnstructuredGridConvexify::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0]);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  this->NumberOfImaginaryCells = 0;
+  this->NumberOfSteinerPoints = 0;
+  this->NumberOfAddedPoints = 0;
+  this->ExecutionTime = 0.0;
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  // Every early return leaves the input as the output.
+  output->ShallowCopy(input);
+  if (!input->GetPoints() || input->GetNumberOfCells() == 0)
+  {
+    return 1;
+  }
+  if (!AllFinite(input->GetPoints()))
+  {
+    vtkErrorMacro("Infinite or NaN point coordinates: the grid was not convexified.");
+    return 1;
+  }
+  vtkIdType invalidCells = 0;
+  vtkSmartPointer<vtkUnstructuredGrid> grid =
+    ppiray::EmptyCellsWithInvalidPointIds(input, invalidCells);
+  if (invalidCells > 0)
+  {
+    vtkWarningMacro(<< invalidCells << " cells with point ids outside [0, "
+                    << input->GetNumberOfPoints() << ") were emptied.");
+  }
+  else
+  {
+    grid = input;
+  }
+
+  ppiray::TetrahedralSplit split;
+  ppiray::SplitIntoTetrahedra(grid, false, split);
+  if (split.GetNumberOfUnsupportedCells() > 0)
+  {
+    vtkWarningMacro(<< split.GetNumberOfUnsupportedCells()
+                    << " cells that are not linear or quadratic 3D cells are left out: imaginary "
+                       "cells may fill their space.");
+  }
+  const vtkIdType numberOfTets = static_cast<vtkIdType>(split.CellIds.size());
+  if (numberOfTets == 0)
+  {
+    vtkWarningMacro("No 3D cells: nothing to convexify.");
+    return 1;
+  }
+  this->UpdateProgress(0.05);
+
+  // The boundary: triangles of the conforming split with no neighbour.
+  const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
+  vtkNew<vtkUnstructuredGridCellAdjacency> adjacency;
+  adjacency->Build(numberOfPoints, split.Tets.data(), numberOfTets);
+  const std::vector<vtkIdType>& faces = adjacency->GetBoundaryFaces();
+  const vtkIdType numberOfFaces = adjacency->GetNumberOfBoundaryFaces();
+  std::vector<vtkIdType> triangles(3 * numberOfFaces), owner(numberOfFaces);
+  for (vtkIdType k = 0; k < numberOfFaces; ++k)
+  {
+    const vtkIdType t = faces[2 * k];
+    const int f = static_cast<int>(faces[2 * k + 1]);
+    for (int v = 0; v < 3; ++v)
+    {
+      triangles[3 * k + v] = split.Tets[4 * t + vtkUnstructuredGridCellAdjacency::FaceVertex(f, v)];
+    }
+    owner[k] = split.CellIds[t];
+  }
+
+  // The box: the bounds of the points the cells use, inflated.
+  std::vector<double> xyz(3 * numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    grid->GetPoints()->GetPoint(i, &xyz[3 * i]);
+  }
+  double box[6] = { std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max() };
+  for (vtkIdType id : split.Tets)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      box[2 * a] = std::min(box[2 * a], xyz[3 * id + a]);
+      box[2 * a + 1] = std::max(box[2 * a + 1], xyz[3 * id + a]);
+    }
+  }
+  const double diagonal =
+    std::sqrt((box[1] - box[0]) * (box[1] - box[0]) + (box[3] - box[2]) * (box[3] - box[2]) +
+              (box[5] - box[4]) * (box[5] - box[4]));
+  const double margin = this->Margin * (diagonal > 0.0 ? diagonal : 1.0);
+  for (int a = 0; a < 3; ++a)
+  {
+    box[2 * a] -= margin;
+    box[2 * a + 1] += margin;
+  }
+
+  const ppiray::ImaginaryTetrahedra fill = ppiray::FillBoxAroundSurface(
+    xyz, triangles, box, [this](double done) { this->UpdateProgress(0.1 + 0.8 * done); });
+  if (!fill.Error.empty())
+  {
+    vtkErrorMacro("Not convexified: " << fill.Error << ".");
+    return 1;
+  }
+
+  // The grid, then the new points and the imaginary tetrahedra.
+  output->DeepCopy(grid);
+  vtkPoints* points = output->GetPoints();
+  for (const auto& p : fill.NewPoints)
+  {
+    points->InsertNextPoint(p.data());
+  }
+  const vtkIdType numberOfCells = grid->GetNumberOfCells();
+  const vtkIdType numberOfImaginary = static_cast<vtkIdType>(fill.Tets.size() / 4);
+  for (vtkIdType t = 0; t < numberOfImaginary; ++t)
+  {
+    output->InsertNextCell(VTK_TETRA, 4, fill.Tets.data() + 4 * t);
+  }
+  ExtendWithMinimum(output->GetPointData(), points->GetNumberOfPoints());
+  ExtendWithMinimum(output->GetCellData(), numberOfCells + numberOfImaginary);
+
+  // Imaginary cells: hidden (VTK's ghost flag for cells never shown).
+  vtkUnsignedCharArray* ghosts = output->GetCellGhostArray();
+  if (!ghosts)
+  {
+    ghosts = output->AllocateCellGhostArray();
+  }
+  for (vtkIdType c = numberOfCells; c < numberOfCells + numberOfImaginary; ++c)
+  {
+    ghosts->SetValue(c, vtkDataSetAttributes::HIDDENCELL);
+  }
+  vtkNew<vtkIdTypeArray> across;
+  across->SetName(BoundaryCellArrayName());
+  across->SetNumberOfComponents(4);
+  across->SetNumberOfTuples(numberOfCells + numberOfImaginary);
+  across->Fill(-1);
+  for (vtkIdType t = 0; t < numberOfImaginary; ++t)
+  {
+    for (int f = 0; f < 4; ++f)
+    {
+      const vtkIdType triangle = fill.BoundaryTriangle[4 * t + f];
+      across->SetTypedComponent(numberOfCells + t, f, triangle >= 0 ? owner[triangle] : -1);
+    }
+  }
+  output->GetCellData()->AddArray(across);
+
+  this->NumberOfImaginaryCells = numberOfImaginary;
+  this->NumberOfSteinerPoints = fill.SteinerPoints;
+  this->NumberOfAddedPoints = static_cast<vtkIdType>(fill.NewPoints.size());
+  timer->StopTimer();
+  this->ExecutionTime = timer->GetElapsedTime();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkUnstructuredGridConvexify::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Margin: " << this->Margin << "\n";
+  os << indent << "NumberOfImaginaryCells: " << this->NumberOfImaginaryCells << "\n";
+  os << indent << "NumberOfSteinerPoints: " << this->NumberOfSteinerPoints << "\n";
+  os << indent << "NumberOfAddedPoints: " << this->NumberOfAddedPoints << "\n";
+  os << indent << "ExecutionTime: " << this->ExecutionTime << "\n";
+}

@@ -1,0 +1,80 @@
+/**
+ * @class   vtkUnstructuredGridConvexify
+ * @brief   fills the convex box around an unstructured grid with imaginary tetrahedra
+ *
+ * Output: the input's cells and points unchanged, followed by tetrahedra
+ * that fill an axis-aligned box around the mesh (inflated by Margin times
+ * the diagonal on every side) minus the mesh itself: the space between the
+ * mesh and the box, its cavities, holes and the gaps between its parts.
+ * They conform to the mesh's boundary (as its cells are split into
+ * tetrahedra for rendering, ppirayConformingTetrahedra.h): each boundary
+ * triangle is the face of one imaginary tetrahedron, or is split by Steiner
+ * points into several whose union it is. The box is convex, so a ray through
+ * the output enters it once and leaves it once (Weiler et al. 2003, Sec. 3.3).
+ *
+ * Imaginary cells are marked in the ghost array ("vtkGhostType",
+ * vtkDataSetAttributes::HIDDENCELL: part of the grid, never shown) and, for
+ * each of their faces on a boundary triangle, "ppirayBoundaryCell" gives the
+ * input cell across it (-1 elsewhere; 4 components, face f opposite corner
+ * f). Point and cell arrays take each component's minimum over the input on
+ * the new points and cells (finite, ranges unchanged: imaginary cells emit
+ * nothing). Built with a conforming constrained Delaunay triangulation
+ * (CGAL >= 6.1; GPL, hence this module of its own).
+ *
+ * A boundary that intersects itself (tangled or overlapping cells) bounds no
+ * volume: an error says so and the output is the input, unchanged.
+ */
+#ifndef vtkUnstructuredGridConvexify_h
+#define vtkUnstructuredGridConvexify_h
+
+#include "ppirayConvexifyModule.h" // for export macro
+#include "vtkUnstructuredGridAlgorithm.h"
+
+class PPIRAYCONVEXIFY_EXPORT vtkUnstructuredGridConvexify : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static vtkUnstructuredGridConvexify* New();
+  vtkTypeMacro(vtkUnstructuredGridConvexify, vtkUnstructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * How far the box reaches past the mesh's bounds on every side, as a
+   * fraction of the bounds' diagonal (default 0.02).
+   */
+  vtkSetClampMacro(Margin, double, 1e-6, 10.0);
+  vtkGetMacro(Margin, double);
+  ///@}
+
+  ///@{
+  /**
+   * Of the last execution: imaginary tetrahedra added, Steiner points the
+   * triangulation put on the mesh's boundary, points added (box corners and
+   * Steiner points), and seconds taken.
+   */
+  vtkGetMacro(NumberOfImaginaryCells, vtkIdType);
+  vtkGetMacro(NumberOfSteinerPoints, vtkIdType);
+  vtkGetMacro(NumberOfAddedPoints, vtkIdType);
+  vtkGetMacro(ExecutionTime, double);
+  ///@}
+
+  /// Name of the 4-component cell array of input cells across imaginary faces.
+  static const char* BoundaryCellArrayName() { return "ppirayBoundaryCell"; }
+
+protected:
+  vtkUnstructuredGridConvexify() = default;
+  ~vtkUnstructuredGridConvexify() override = default;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Margin = 0.02;
+  vtkIdType NumberOfImaginaryCells = 0;
+  vtkIdType NumberOfSteinerPoints = 0;
+  vtkIdType NumberOfAddedPoints = 0;
+  double ExecutionTime = 0.0;
+
+private:
+  vtkUnstructuredGridConvexify(const vtkUnstructuredGridConvexify&) = delete;
+  void operator=(const vtkUnstructuredGridConvexify&) = delete;
+};
+
+#endif
