@@ -4,11 +4,14 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/make_conforming_constrained_Delaunay_triangulation_3.h>
 
+#include <algorithm>
 #include <deque>
 #include <exception>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <unordered_map>
+#include <utility>
 
 namespace
 {
@@ -53,9 +56,6 @@ ImaginaryTetrahedra FillBoxAroundSurface(const std::vector<double>& points,
     soupToInput.push_back(-1);
   }
   std::unordered_map<vtkIdType, std::size_t> inputToSoup;
-  std::vector<Polygon> polygons;
-  AppendBoxFaces(0, polygons);
-  const std::size_t numberOfBoxFaces = polygons.size();
   for (vtkIdType id : triangles)
   {
     if (inputToSoup.emplace(id, soup.size()).second)
@@ -64,16 +64,91 @@ ImaginaryTetrahedra FillBoxAroundSurface(const std::vector<double>& points,
       soupToInput.push_back(id);
     }
   }
-  for (std::size_t t = 0; t < triangles.size(); t += 3)
+  // The constraints: the box's faces, then the boundary triangles except
+  // those that bound nothing: degenerate ones (collinear corners, exactly)
+  // and pairs on the same points (both sides of a seam, inside the mesh).
+  std::vector<Polygon> polygons;
+  AppendBoxFaces(0, polygons);
+  const std::size_t numberOfBoxFaces = polygons.size();
+  std::vector<vtkIdType> polygonTriangle; // input triangle of each boundary polygon
+  std::map<std::array<std::size_t, 3>, std::vector<vtkIdType>> samePlace;
+  for (std::size_t t = 0; 3 * t < triangles.size(); ++t)
   {
-    polygons.push_back(
-      { inputToSoup[triangles[t]], inputToSoup[triangles[t + 1]], inputToSoup[triangles[t + 2]] });
+    const Polygon p{ inputToSoup[triangles[3 * t]], inputToSoup[triangles[3 * t + 1]],
+      inputToSoup[triangles[3 * t + 2]] };
+    if (p[0] == p[1] || p[1] == p[2] || p[0] == p[2] ||
+        CGAL::collinear(soup[p[0]], soup[p[1]], soup[p[2]]))
+    {
+      ++result.DroppedTriangles;
+      continue;
+    }
+    std::array<std::size_t, 3> key{ p[0], p[1], p[2] };
+    std::sort(key.begin(), key.end());
+    samePlace[key].push_back(static_cast<vtkIdType>(t));
+  }
+  for (const auto& entry : samePlace)
+  {
+    if (entry.second.size() != 1)
+    {
+      // Both sides of a seam: inside the mesh, no constraint.
+      result.DroppedTriangles += static_cast<vtkIdType>(entry.second.size());
+      continue;
+    }
+    const vtkIdType t = entry.second.front();
+    polygons.push_back({ inputToSoup[triangles[3 * t]], inputToSoup[triangles[3 * t + 1]],
+      inputToSoup[triangles[3 * t + 2]] });
+    polygonTriangle.push_back(t);
   }
 
   // Preconditions of the triangulation, checked: no two constraints
-  // intersect other than along shared edges or corners (degenerate
-  // triangles count as intersecting).
+  // intersect other than along shared edges or corners. Two boundary
+  // triangles that lie on each other facing opposite ways are the two sides
+  // of a crack whose triangulations differ (an O-grid's cut split into
+  // tetrahedra): they bound nothing and are left out; any other
+  // intersection is an error.
   {
+    std::vector<Polygon> boundary(polygons.begin() + numberOfBoxFaces, polygons.end());
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    CGAL::Polygon_mesh_processing::triangle_soup_self_intersections(
+      soup, boundary, std::back_inserter(pairs));
+    std::vector<bool> dropped(boundary.size(), false);
+    for (const auto& pair : pairs)
+    {
+      const Polygon& a = boundary[pair.first];
+      const Polygon& b = boundary[pair.second];
+      bool coplanar = true;
+      for (std::size_t v : b)
+      {
+        coplanar = coplanar && CGAL::coplanar(soup[a[0]], soup[a[1]], soup[a[2]], soup[v]);
+      }
+      const auto na = CGAL::normal(soup[a[0]], soup[a[1]], soup[a[2]]);
+      const auto nb = CGAL::normal(soup[b[0]], soup[b[1]], soup[b[2]]);
+      if (!coplanar || na * nb >= 0)
+      {
+        result.Error = std::string("the mesh's boundary intersects itself (") +
+                       (coplanar ? "faces on each other facing the same way" : "faces crossing") +
+                       ": tangled or overlapping cells); it bounds no volume to fill around";
+        return result;
+      }
+      dropped[pair.first] = dropped[pair.second] = true;
+    }
+    if (!pairs.empty())
+    {
+      std::vector<Polygon> kept(polygons.begin(), polygons.begin() + numberOfBoxFaces);
+      std::vector<vtkIdType> keptTriangle;
+      for (std::size_t i = 0; i < boundary.size(); ++i)
+      {
+        if (dropped[i])
+        {
+          ++result.DroppedTriangles;
+          continue;
+        }
+        kept.push_back(boundary[i]);
+        keptTriangle.push_back(polygonTriangle[i]);
+      }
+      polygons.swap(kept);
+      polygonTriangle.swap(keptTriangle);
+    }
     std::vector<Polygon> checked(polygons.begin() + numberOfBoxFaces, polygons.end());
     for (std::size_t f = 0; f < numberOfBoxFaces; ++f)
     {
@@ -81,10 +156,15 @@ ImaginaryTetrahedra FillBoxAroundSurface(const std::vector<double>& points,
       checked.push_back({ q[0], q[1], q[2] });
       checked.push_back({ q[0], q[2], q[3] });
     }
-    if (CGAL::Polygon_mesh_processing::does_triangle_soup_self_intersect(soup, checked))
+    std::vector<std::pair<std::size_t, std::size_t>> left;
+    CGAL::Polygon_mesh_processing::triangle_soup_self_intersections(
+      soup, checked, std::back_inserter(left));
+    if (!left.empty())
     {
-      result.Error = "the mesh's boundary intersects itself (tangled, overlapping or degenerate "
-                     "boundary faces): it bounds no volume to fill around";
+      result.Error =
+        std::to_string(left.size()) +
+        " pairs of boundary faces still intersect once the two sides of cracks are left out: "
+        "the boundary bounds no volume to fill around";
       return result;
     }
   }
@@ -208,8 +288,7 @@ ImaginaryTetrahedra FillBoxAroundSurface(const std::vector<double>& points,
       if (ccdt.is_facet_constrained(c, f))
       {
         const auto index = static_cast<std::size_t>(ccdt.face_constraint_index(c, f));
-        triangle =
-          index >= numberOfBoxFaces ? static_cast<vtkIdType>(index - numberOfBoxFaces) : -1;
+        triangle = index >= numberOfBoxFaces ? polygonTriangle[index - numberOfBoxFaces] : -1;
       }
       result.BoundaryTriangle.push_back(triangle);
     }

@@ -12,7 +12,9 @@
  * covered by several imaginary faces). A cell of the triangulation lies
  * outside the mesh when reaching it from the box crosses the boundary an
  * even number of times (parity flood fill over the cell adjacency), which
- * also finds cavities and the space between several parts.
+ * also finds cavities and the space between several parts. Triangles that
+ * bound nothing are left out: degenerate ones (exactly collinear corners)
+ * and pairs on the same points (both sides of a seam).
  */
 #ifndef ppirayImaginaryTetrahedra_h
 #define ppirayImaginaryTetrahedra_h
@@ -38,6 +40,9 @@ struct ImaginaryTetrahedra
   std::vector<vtkIdType> BoundaryTriangle;
   /// Steiner points the triangulation inserted on the boundary.
   vtkIdType SteinerPoints = 0;
+  /// Boundary triangles that bound nothing: degenerate, or on the same
+  /// points as another (both sides of a seam).
+  vtkIdType DroppedTriangles = 0;
   /// Cells of the triangulation inside the mesh (dropped).
   vtkIdType InsideCells = 0;
   /// Empty on success, else why nothing was made.

@@ -3,6 +3,7 @@
 #include "ppirayConformingTetrahedra.h"
 #include "ppirayImaginaryTetrahedra.h"
 #include "ppirayValidPointIds.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
@@ -19,8 +20,10 @@
 #include "vtkUnstructuredGridCellAdjacency.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <vector>
 
 vtkStandardNewMacro(vtkUnstructuredGridConvexify);
@@ -53,6 +56,57 @@ void ExtendWithMinimum(vtkDataSetAttributes* data, vtkIdType count)
   }
 }
 
+// `grid`'s cells with every point id replaced by the first id at the same
+// place, so that cells meeting at a seam without sharing point ids (an
+// O-grid's cut) share them; nullptr when no two points coincide (or the grid
+// has polyhedra, whose faces would need the same). `merged`: ids replaced.
+vtkSmartPointer<vtkUnstructuredGrid> WithCoincidentPointsShared(
+  vtkUnstructuredGrid* grid, vtkIdType& merged)
+{
+  merged = 0;
+  const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
+  std::vector<vtkIdType> first(numberOfPoints);
+  std::map<std::array<double, 3>, vtkIdType> at;
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    std::array<double, 3> x;
+    grid->GetPoint(i, x.data());
+    first[i] = at.emplace(x, i).first->second;
+    merged += first[i] != i ? 1 : 0;
+  }
+  if (merged == 0)
+  {
+    return nullptr;
+  }
+  vtkNew<vtkCellArray> cells;
+  vtkNew<vtkUnsignedCharArray> types;
+  types->SetNumberOfValues(grid->GetNumberOfCells());
+  std::vector<vtkIdType> ids;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    if (grid->GetCellType(c) == VTK_POLYHEDRON)
+    {
+      merged = 0;
+      return nullptr;
+    }
+    vtkIdType npts;
+    const vtkIdType* pts;
+    grid->GetCellPoints(c, npts, pts);
+    ids.assign(pts, pts + npts);
+    for (vtkIdType& id : ids)
+    {
+      id = first[id];
+    }
+    cells->InsertNextCell(npts, ids.data());
+    types->SetValue(c, static_cast<unsigned char>(grid->GetCellType(c)));
+  }
+  auto shared = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  shared->SetPoints(grid->GetPoints());
+  shared->SetCells(types, cells);
+  shared->GetCellData()->ShallowCopy(grid->GetCellData());
+  return shared;
+}
+
 bool AllFinite(vtkPoints* points)
 {
   double p[3];
@@ -81,6 +135,8 @@ int vtkUnstructuredGridConvexify::RequestData(
   this->NumberOfImaginaryCells = 0;
   this->NumberOfSteinerPoints = 0;
   this->NumberOfAddedPoints = 0;
+  this->NumberOfMergedPoints = 0;
+  this->NumberOfDroppedTriangles = 0;
   this->ExecutionTime = 0.0;
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
@@ -108,8 +164,12 @@ int vtkUnstructuredGridConvexify::RequestData(
     grid = input;
   }
 
+  // The fill sees the mesh with coincident points shared (the output keeps
+  // the input's cells; imaginary cells use the first id at each place).
+  vtkIdType mergedPoints = 0;
+  vtkSmartPointer<vtkUnstructuredGrid> sealed = WithCoincidentPointsShared(grid, mergedPoints);
   ppiray::TetrahedralSplit split;
-  ppiray::SplitIntoTetrahedra(grid, false, split);
+  ppiray::SplitIntoTetrahedra(sealed ? sealed.Get() : grid.Get(), false, split);
   if (split.GetNumberOfUnsupportedCells() > 0)
   {
     vtkWarningMacro(<< split.GetNumberOfUnsupportedCells()
@@ -135,9 +195,20 @@ int vtkUnstructuredGridConvexify::RequestData(
   {
     const vtkIdType t = faces[2 * k];
     const int f = static_cast<int>(faces[2 * k + 1]);
+    const vtkIdType* tet = split.Tets.data() + 4 * t;
     for (int v = 0; v < 3; ++v)
     {
-      triangles[3 * k + v] = split.Tets[4 * t + vtkUnstructuredGridCellAdjacency::FaceVertex(f, v)];
+      triangles[3 * k + v] = tet[vtkUnstructuredGridCellAdjacency::FaceVertex(f, v)];
+    }
+    // Wound outward (FaceVertex's order is, for a positive tetrahedron).
+    double p[4][3];
+    for (int v = 0; v < 4; ++v)
+    {
+      grid->GetPoints()->GetPoint(tet[v], p[v]);
+    }
+    if (vtkUnstructuredGridCellAdjacency::SignedVolume6(p[0], p[1], p[2], p[3]) < 0)
+    {
+      std::swap(triangles[3 * k + 1], triangles[3 * k + 2]);
     }
     owner[k] = split.CellIds[t];
   }
@@ -171,6 +242,8 @@ int vtkUnstructuredGridConvexify::RequestData(
 
   const ppiray::ImaginaryTetrahedra fill = ppiray::FillBoxAroundSurface(
     xyz, triangles, box, [this](double done) { this->UpdateProgress(0.1 + 0.8 * done); });
+  this->NumberOfMergedPoints = mergedPoints;
+  this->NumberOfDroppedTriangles = fill.DroppedTriangles;
   if (!fill.Error.empty())
   {
     vtkErrorMacro("Not convexified: " << fill.Error << ".");
@@ -234,5 +307,7 @@ void vtkUnstructuredGridConvexify::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfImaginaryCells: " << this->NumberOfImaginaryCells << "\n";
   os << indent << "NumberOfSteinerPoints: " << this->NumberOfSteinerPoints << "\n";
   os << indent << "NumberOfAddedPoints: " << this->NumberOfAddedPoints << "\n";
+  os << indent << "NumberOfMergedPoints: " << this->NumberOfMergedPoints << "\n";
+  os << indent << "NumberOfDroppedTriangles: " << this->NumberOfDroppedTriangles << "\n";
   os << indent << "ExecutionTime: " << this->ExecutionTime << "\n";
 }

@@ -21,8 +21,12 @@
  * nothing). Built with a conforming constrained Delaunay triangulation
  * (CGAL >= 6.1; GPL, hence this module of its own).
  *
- * A boundary that intersects itself (tangled or overlapping cells) bounds no
- * volume: an error says so and the output is the input, unchanged.
+ * Boundary points at the same place are taken as one for the fill, and
+ * boundary triangles that bound nothing are left out of it (degenerate ones,
+ * and the two sides of a seam where cells meet without sharing point ids, as
+ * at an O-grid's cut). A boundary that still intersects itself (tangled or
+ * overlapping cells) bounds no volume: an error says so and the output is
+ * the input, unchanged.
  */
 #ifndef vtkUnstructuredGridConvexify_h
 #define vtkUnstructuredGridConvexify_h
@@ -55,6 +59,10 @@ public:
   vtkGetMacro(NumberOfImaginaryCells, vtkIdType);
   vtkGetMacro(NumberOfSteinerPoints, vtkIdType);
   vtkGetMacro(NumberOfAddedPoints, vtkIdType);
+  /// Boundary points at the same place as another (merged for the fill).
+  vtkGetMacro(NumberOfMergedPoints, vtkIdType);
+  /// Boundary triangles that bound nothing: degenerate, or a seam's two sides.
+  vtkGetMacro(NumberOfDroppedTriangles, vtkIdType);
   vtkGetMacro(ExecutionTime, double);
   ///@}
 
@@ -70,6 +78,8 @@ protected:
   vtkIdType NumberOfImaginaryCells = 0;
   vtkIdType NumberOfSteinerPoints = 0;
   vtkIdType NumberOfAddedPoints = 0;
+  vtkIdType NumberOfMergedPoints = 0;
+  vtkIdType NumberOfDroppedTriangles = 0;
   double ExecutionTime = 0.0;
 
 private:

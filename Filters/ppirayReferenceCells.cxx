@@ -2,7 +2,9 @@
 
 #include "ppirayConformingTetrahedra.h"
 #include "vtkCellType.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkMatrix4x4.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -31,6 +33,25 @@ ReferenceCells CollectCells(vtkUnstructuredGrid* grid)
   ReferenceCells cells;
   std::vector<vtkIdType> unsupported;
   ppiray::ExtractTetrahedra(grid, cells.Tetrahedra, cells.TetrahedronCell, unsupported);
+  // Cells the ghost array marks HIDDENCELL (blanked, or imaginary cells of a
+  // convexified grid) contribute nothing: left out.
+  vtkUnsignedCharArray* ghosts = grid->GetCellGhostArray();
+  auto hidden = [ghosts](vtkIdType c)
+  { return ghosts && (ghosts->GetValue(c) & vtkDataSetAttributes::HIDDENCELL) != 0; };
+  if (ghosts)
+  {
+    size_t kept = 0;
+    for (size_t t = 0; t < cells.TetrahedronCell.size(); ++t)
+    {
+      if (!hidden(cells.TetrahedronCell[t]))
+      {
+        std::copy_n(cells.Tetrahedra.begin() + 4 * t, 4, cells.Tetrahedra.begin() + 4 * kept);
+        cells.TetrahedronCell[kept++] = cells.TetrahedronCell[t];
+      }
+    }
+    cells.Tetrahedra.resize(4 * kept);
+    cells.TetrahedronCell.resize(kept);
+  }
   // Quadratic and higher-order tetrahedra: the linear tetrahedron of their
   // corners (the first four points), as the mapper renders them.
   for (size_t u = 0; u < unsupported.size(); u += 2)
@@ -43,7 +64,7 @@ ReferenceCells CollectCells(vtkUnstructuredGrid* grid)
     }
     for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
     {
-      if (grid->GetCellType(c) == type)
+      if (grid->GetCellType(c) == type && !hidden(c))
       {
         vtkIdType npts;
         const vtkIdType* pts;
@@ -62,7 +83,7 @@ ReferenceCells CollectCells(vtkUnstructuredGrid* grid)
     {
       const int type = grid->GetCellType(c);
       if (type == VTK_TETRA || type == VTK_QUADRATIC_TETRA || type == VTK_LAGRANGE_TETRAHEDRON ||
-          type == VTK_BEZIER_TETRAHEDRON)
+          type == VTK_BEZIER_TETRAHEDRON || hidden(c))
       {
         continue;
       }

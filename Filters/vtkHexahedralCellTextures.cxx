@@ -1,6 +1,7 @@
 #include "vtkHexahedralCellTextures.h"
 
 #include "ppirayConformingTetrahedra.h"
+#include "ppirayHiddenCells.h"
 #include "ppirayInvertedSheets.h"
 #include "ppirayMeshLocalFrame.h"
 #include "vtkCellArray.h"
@@ -253,6 +254,7 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   {
     return false;
   }
+  this->Hidden = ppiray::HiddenCells(grid, this->CellIds);
 
   // Right-handed, with the cell frame at a corner that has one.
   for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
@@ -445,10 +447,10 @@ bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScala
         hasNaN = hasNaN || std::isnan(s[i]);
       }
     }
-    if (hasNaN)
+    if (hasNaN || (h < static_cast<vtkIdType>(this->Hidden.size()) && this->Hidden[h]))
     {
       out[0] = TransparentCellOffset();
-      ++nanCells;
+      nanCells += hasNaN ? 1 : 0;
       continue;
     }
     double corners[8][3], frame[12], c[8];

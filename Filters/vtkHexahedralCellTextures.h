@@ -15,7 +15,8 @@
  *   point id), so both cells sharing a face see the same two triangles;
  * - coefficients: c0..c7 of the trilinear field in the cell's frame (origin
  *   corner 0, axes to corners 1, 3, 4; vtkHexahedronCoefficients), c0 =
- *   TransparentCellOffset() for a cell touching a NaN scalar.
+ *   TransparentCellOffset() for a cell touching a NaN scalar or marked
+ *   HIDDENCELL in the ghost array (ppirayHiddenCells.h).
  *
  * Also the boundary triangles (two per boundary face, split by the same rule,
  * wound outward) with their points and, per triangle, 12 h + 2 f + (0 or 1).
@@ -147,6 +148,7 @@ protected:
   double Length = 0;
   double MaximumCellDiameter = 0;
   std::vector<vtkIdType> CellIds;
+  std::vector<unsigned char> Hidden; // ppirayHiddenCells.h
   std::vector<vtkIdType> CornerIds;
   std::vector<float> Corners;
   std::vector<int> Neighbors;

@@ -1,6 +1,7 @@
 #include "vtkTetrahedralCellTextures.h"
 
 #include "ppirayConformingTetrahedra.h"
+#include "ppirayHiddenCells.h"
 #include "ppirayMeshLocalFrame.h"
 
 #include "vtkDataArray.h"
@@ -55,6 +56,8 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->Tets = std::move(split.Tets);
   this->CellIds = std::move(split.CellIds);
   this->Unsupported = std::move(split.Unsupported);
+  this->Hidden = ppiray::HiddenCells(grid, this->CellIds);
+  this->NumberOfHiddenTetrahedra = std::count(this->Hidden.begin(), this->Hidden.end(), 1);
   this->FacePlanes.clear();
   this->Neighbors.clear();
   this->Field.clear();
@@ -234,7 +237,7 @@ bool vtkTetrahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScal
   for (vtkIdType t = 0; t < numberOfTets; ++t)
   {
     float* field = this->Field.data() + 4 * t;
-    if (this->Degenerate[t])
+    if (this->Degenerate[t] || (t < static_cast<vtkIdType>(this->Hidden.size()) && this->Hidden[t]))
     {
       field[3] = TransparentCellOffset();
       continue;

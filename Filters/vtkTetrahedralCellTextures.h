@@ -19,7 +19,9 @@
  *   Also gives the boundary triangles, wound outward, with their points.
  * - BuildField(): when the scalars change. Point scalars give the linear
  *   interpolant's gradient; cell scalars a constant. A tetrahedron touching a
- *   NaN scalar gets the TransparentCellOffset() marker and renders empty.
+ *   NaN scalar, or of a cell the ghost array marks HIDDENCELL (read by
+ *   BuildGeometry: blanked cells, convexification's imaginary cells), gets
+ *   the TransparentCellOffset() marker: traversed, rendered empty.
  *
  * No OpenGL here: the mapper uploads these arrays as buffer textures.
  */
@@ -118,6 +120,8 @@ public:
   vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
   vtkGetMacro(NumberOfFoldedFaces, vtkIdType);
   vtkGetMacro(NumberOfNaNScalars, vtkIdType);
+  /** Tetrahedra of cells marked HIDDENCELL (traversed, rendered empty). */
+  vtkGetMacro(NumberOfHiddenTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfUnsupportedCells, vtkIdType);
   /** Hexahedra, voxels, wedges and pyramids split into tetrahedra. */
   vtkGetMacro(NumberOfSplitCells, vtkIdType);
@@ -158,6 +162,7 @@ protected:
   std::vector<vtkIdType> Tets; // 4 point ids per tetrahedron
   std::vector<vtkIdType> CellIds;
   std::vector<unsigned char> Degenerate;
+  std::vector<unsigned char> Hidden;
   std::vector<float> FacePlanes;
   std::vector<int> Neighbors;
   std::vector<float> Field;
@@ -171,6 +176,7 @@ protected:
   vtkIdType NumberOfNonManifoldFaces = 0;
   vtkIdType NumberOfFoldedFaces = 0;
   vtkIdType NumberOfNaNScalars = 0;
+  vtkIdType NumberOfHiddenTetrahedra = 0;
   vtkIdType NumberOfUnsupportedCells = 0;
   vtkIdType NumberOfSplitCells = 0;
   vtkIdType NumberOfQuadraticCells = 0;

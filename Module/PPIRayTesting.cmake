@@ -70,3 +70,21 @@ function (ppiray_add_python_test name script)
     SKIP_RETURN_CODE 125
     ENVIRONMENT "${environment}")
 endfunction ()
+
+# ppiray_add_test_display(<target>): the rendering test helpers' one X
+# connection per process, opened with retries (PPIRayTestDisplay.cxx), and
+# VTK's rendering factories.
+function (ppiray_add_test_display target)
+  target_sources("${target}" PRIVATE
+    "${PROJECT_SOURCE_DIR}/Rendering/Testing/Cxx/PPIRayTestDisplay.cxx")
+  target_include_directories("${target}" PRIVATE "${PROJECT_SOURCE_DIR}/Rendering/Testing/Cxx")
+  find_package(X11 QUIET)
+  if (TARGET X11::X11)
+    target_link_libraries("${target}" PRIVATE X11::X11)
+    target_compile_definitions("${target}" PRIVATE PPIRAY_TEST_HAS_X11=1)
+  else ()
+    target_compile_definitions("${target}" PRIVATE PPIRAY_TEST_HAS_X11=0)
+  endif ()
+  vtk_module_autoinit(TARGETS "${target}"
+    MODULES VTK::RenderingOpenGL2 VTK::InteractionStyle VTK::RenderingVolumeOpenGL2)
+endfunction ()

@@ -193,6 +193,23 @@ inline VoxelBlock BlobVoxelBlock(int n)
   return FieldVoxelBlock(n, Blob, "blob");
 }
 
+// A block with a square tunnel through it beside a second, separate block
+// (10 x 6 x 6 voxels of 0.1, split into tetrahedra; the blob field): rays
+// leave and re-enter it several times.
+inline vtkSmartPointer<vtkUnstructuredGrid> TunnelAndBlock()
+{
+  const int n[3] = { 10, 6, 6 };
+  const double origin[3] = { 0, 0, 0 };
+  auto keep = [](int i, int j, int k)
+  {
+    const bool tunnel = j >= 2 && j < 4 && k >= 2 && k < 4 && i < 6;
+    const bool gap = i == 6 || i == 7;
+    return !tunnel && !gap;
+  };
+  return VoxelTetrahedra(
+    n, 0.1, origin, keep, [](double x, double y, double z) { return Blob(x, y / 0.6, z / 0.6); });
+}
+
 // A smooth rainbow with smooth opacity over [lo, hi].
 inline void SmoothTransferFunction(vtkVolumeProperty* property, double lo, double hi,
   double maxOpacity = 0.6, double unitDistance = 0.25)

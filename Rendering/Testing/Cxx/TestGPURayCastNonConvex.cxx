@@ -12,16 +12,7 @@
 
 int TestGPURayCastNonConvex(int argc, char* argv[])
 {
-  const int n[3] = { 10, 6, 6 };
-  const double origin[3] = { 0, 0, 0 };
-  auto keep = [](int i, int j, int k)
-  {
-    const bool tunnel = j >= 2 && j < 4 && k >= 2 && k < 4 && i < 6;
-    const bool gap = i == 6 || i == 7;
-    return !tunnel && !gap;
-  };
-  auto grid = ppiray_test::VoxelTetrahedra(n, 0.1, origin, keep,
-    [](double x, double y, double z) { return ppiray_test::Blob(x, y / 0.6, z / 0.6); });
+  auto grid = ppiray_test::TunnelAndBlock();
 
   ppiray_test::Scene scene(300, 300);
   ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.7, 0.1);

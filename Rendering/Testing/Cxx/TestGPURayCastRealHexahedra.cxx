@@ -12,7 +12,8 @@
 //     pinch-outs collapse cells: 969 hexahedra are flat (top face on bottom
 //     face, zero volume) and 16 more have 1 to 3 coincident corners. All of
 //     these are flagged inactive (vtkGhostType HIDDENCELL, 14,775 cells in
-//     all), a flag that neither the mapper nor the reference honours.
+//     all): traversed and rendered empty by the mapper, left out by the
+//     reference (the baseline shows the active reservoir only).
 //  4. disk_out_ref (Exodus II), point variable Temp: 7,472 hexahedra of a CVD
 //     reactor, its element blocks in one vtkUnstructuredGrid.
 //
