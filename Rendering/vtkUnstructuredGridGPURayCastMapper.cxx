@@ -22,6 +22,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridAlgorithm.h"
 #include "vtkVolume.h"
 #include "vtkVolumeCollection.h"
 #include "vtkVolumeProperty.h"
@@ -57,7 +58,11 @@ public:
   vtkTimeStamp CellsTime;
   bool CellsForHexahedra = false; // built with a hexahedron mode other than SUBDIVIDE
   bool CellsValid = false;
-  vtkNew<vtkUnstructuredGrid> InputCopy;           // when the input is not a vtkUnstructuredGrid
+  vtkNew<vtkUnstructuredGrid> InputCopy;   // when the input is not a vtkUnstructuredGrid
+  vtkNew<vtkUnstructuredGrid> Convexified; // NON_CONVEX_CONVEXIFY: the Convexifier's output
+  vtkUnstructuredGridBase* ConvexifiedInput = nullptr;
+  vtkTimeStamp ConvexifiedTime;
+  bool ConvexifyWarned = false;
   vtkSmartPointer<vtkUnstructuredGrid> ValidCells; // the input with cells of invalid ids emptied
 
   vtkPPIRayScalarField Field;
@@ -189,6 +194,45 @@ vtkUnstructuredGridGPURayCastMapper::~vtkUnstructuredGridGPURayCastMapper()
   {
     this->Internals->ReleaseInTheirContext(nullptr);
   }
+  this->SetConvexifier(nullptr);
+}
+
+//------------------------------------------------------------------------------
+vtkCxxSetObjectMacro(
+  vtkUnstructuredGridGPURayCastMapper, Convexifier, vtkUnstructuredGridAlgorithm);
+
+//------------------------------------------------------------------------------
+vtkUnstructuredGridBase* vtkUnstructuredGridGPURayCastMapper::RenderedGrid(
+  vtkUnstructuredGridBase* input)
+{
+  vtkInternals& in = *this->Internals;
+  if (this->NonConvexMode != NON_CONVEX_CONVEXIFY)
+  {
+    return input;
+  }
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
+  if (!this->Convexifier || !grid)
+  {
+    if (!in.ConvexifyWarned)
+    {
+      vtkWarningMacro(<< (this->Convexifier ? "The input is not a vtkUnstructuredGrid"
+                                            : "No Convexifier (e.g. vtkUnstructuredGridConvexify)")
+                      << ": NON_CONVEX_CONVEXIFY peels instead.");
+      in.ConvexifyWarned = true;
+    }
+    return input;
+  }
+  if (in.ConvexifiedInput != input || input->GetMTime() > in.ConvexifiedTime.GetMTime() ||
+      this->Convexifier->GetMTime() > in.ConvexifiedTime.GetMTime())
+  {
+    this->Convexifier->SetInputData(grid);
+    this->Convexifier->Update();
+    in.Convexified->ShallowCopy(this->Convexifier->GetOutput());
+    this->Convexifier->SetInputData(nullptr);
+    in.ConvexifiedInput = input;
+    in.ConvexifiedTime.Modified();
+  }
+  return in.Convexified;
 }
 
 //------------------------------------------------------------------------------
@@ -499,6 +543,7 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   {
     return; // an empty grid is a valid scene: nothing to draw
   }
+  input = this->RenderedGrid(input);
 
   // Find what is stale and update the collaborators, on the CPU, then the GPU.
   // GL objects made in another context (a second window) are released there
@@ -622,6 +667,10 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
      << "\n";
   os << indent << "VectorComponent: " << this->VectorComponent << "\n";
   os << indent << "MaximumNumberOfPeels: " << this->MaximumNumberOfPeels << "\n";
+  os << indent << "NonConvexMode: "
+     << (this->NonConvexMode == NON_CONVEX_CONVEXIFY ? "NON_CONVEX_CONVEXIFY" : "NON_CONVEX_PEEL")
+     << "\n";
+  os << indent << "Convexifier: " << this->Convexifier << "\n";
   os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
   os << indent << "PsiTableSize: " << this->PsiTableSize << "\n";
   os << indent << "PreIntegrationTableSize: " << this->PreIntegrationTableSize << "\n";

@@ -48,6 +48,7 @@
 class vtkMatrix4x4;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
+class vtkUnstructuredGridAlgorithm;
 class vtkUnstructuredGridBase;
 class vtkVolume;
 class vtkWindow;
@@ -247,6 +248,39 @@ public:
 
   ///@{
   /**
+   * How rays that leave a non-convex mesh and enter it again are followed.
+   * NON_CONVEX_PEEL (default): depth peeling, one pass per re-entry.
+   * NON_CONVEX_CONVEXIFY: the Convexifier's output is rendered instead of the
+   * input (run again when the input or the Convexifier changes): imaginary
+   * cells marked HIDDENCELL fill the space around the mesh, so rays enter it
+   * once — one peel where no boundary face is split by Steiner points
+   * (Documentation/convexification.md). Without a Convexifier, or for an
+   * input that is not a vtkUnstructuredGrid, it warns once and peels.
+   */
+  enum NonConvexModes
+  {
+    NON_CONVEX_PEEL = 0,
+    NON_CONVEX_CONVEXIFY = 1
+  };
+  vtkSetClampMacro(NonConvexMode, int, NON_CONVEX_PEEL, NON_CONVEX_CONVEXIFY);
+  vtkGetMacro(NonConvexMode, int);
+  void SetNonConvexModeToPeel() { this->SetNonConvexMode(NON_CONVEX_PEEL); }
+  void SetNonConvexModeToConvexify() { this->SetNonConvexMode(NON_CONVEX_CONVEXIFY); }
+  ///@}
+
+  ///@{
+  /**
+   * The filter NON_CONVEX_CONVEXIFY runs on the input, pluggable like
+   * vtkUnstructuredGridVolumeRayCastMapper's ray integrator: PPIRay's is
+   * vtkUnstructuredGridConvexify (module PPIRay::Convexify, GPL through
+   * CGAL, which this module does not depend on).
+   */
+  virtual void SetConvexifier(vtkUnstructuredGridAlgorithm* convexifier);
+  vtkGetObjectMacro(Convexifier, vtkUnstructuredGridAlgorithm);
+  ///@}
+
+  ///@{
+  /**
    * Upper bound on cells one ray visits per peel; 0 (default) chooses
    * max(1024, 64 * cbrt(number of tetrahedra)). Keeps every shader loop bounded.
    */
@@ -346,6 +380,8 @@ protected:
   int VectorMode = MAGNITUDE;
   int VectorComponent = 0;
   int MaximumNumberOfPeels = 64;
+  int NonConvexMode = NON_CONVEX_PEEL;
+  vtkUnstructuredGridAlgorithm* Convexifier = nullptr;
   int MaximumNumberOfSteps = 0;
   vtkIdType MaximumBufferTexels = 0;
   int PsiTableSize = 512;
@@ -357,6 +393,8 @@ protected:
   // Stages of Render(), each refreshing a collaborator when its source
   // changed: the cells (tetrahedra or hexahedra), the scalar field in them,
   // the integration mode's tables.
+  // The grid rendered: the input, or its convexified copy (NonConvexMode).
+  vtkUnstructuredGridBase* RenderedGrid(vtkUnstructuredGridBase* input);
   bool UpdateCells(vtkUnstructuredGridBase* input, vtkOpenGLRenderWindow* context);
   bool UpdateField(vtkUnstructuredGridBase* input);
   bool UpdateIntegrator(vtkOpenGLRenderWindow* context);

@@ -65,6 +65,22 @@ int Compare(const char* name, vtkUnstructuredGrid* grid, const std::array<double
   {
     largest = std::max(largest, std::abs(int(convexImage[i]) - int(peeledImage[i])));
   }
+  // The same through the mapper: NON_CONVEX_CONVEXIFY with the filter
+  // plugged in (run by the mapper, kept until the input changes).
+  vtkNew<vtkUnstructuredGridGPURayCastMapper> byMode;
+  vtkNew<vtkUnstructuredGridConvexify> plugged;
+  byMode->SetNonConvexModeToConvexify();
+  byMode->SetConvexifier(plugged);
+  byMode->AddObserver(vtkCommand::WarningEvent, messages);
+  byMode->AddObserver(vtkCommand::ErrorEvent, messages);
+  scene.Volume->SetMapper(byMode);
+  byMode->SetInputData(grid);
+  scene.Window->Render();
+  scene.Window->Render();
+  const auto modeImage = ppiray_test::ReadRGB(scene.Window);
+  const bool modeSame =
+    modeImage == convexImage && byMode->GetNumberOfPeels() == convexPeels &&
+    plugged->GetNumberOfImaginaryCells() == convexify->GetNumberOfImaginaryCells();
   std::cout << name << ": " << grid->GetNumberOfCells() << " cells + "
             << convexify->GetNumberOfImaginaryCells() << " imaginary, "
             << convexify->GetNumberOfSteinerPoints() << " Steiner points; " << peels
@@ -76,6 +92,12 @@ int Compare(const char* name, vtkUnstructuredGrid* grid, const std::array<double
   // zero-volume slivers (reported, crossed with zero length).
   const bool split = convexify->GetNumberOfSteinerPoints() > 0;
   int errors = 0;
+  if (!modeSame)
+  {
+    std::cout << "FAILED: " << name << ": NON_CONVEX_CONVEXIFY differs from the convexified "
+              << "grid rendered as input (" << byMode->GetNumberOfPeels() << " peels)\n";
+    ++errors;
+  }
   if (peels < 2 || (!split && convexPeels != 1) || largest > 1 || !messages->Errors.empty() ||
       (!split && !messages->Warnings.empty()))
   {
@@ -122,6 +144,27 @@ int TestGPURayCastConvexified(int, char*[])
     double range[2];
     grid->GetPointData()->GetScalars()->GetRange(range);
     errors += Compare("graded_holes.vtu", grid, { 1.0, 0.6, 1.4 }, range[0], range[1]);
+  }
+  // NON_CONVEX_CONVEXIFY without a Convexifier: one warning, then peeling.
+  {
+    ppiray_test::Scene scene(64, 64);
+    auto grid = ppiray_test::TunnelAndBlock();
+    ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.7, 0.1);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    vtkNew<ppiray_test::MessageCollector> messages;
+    mapper->AddObserver(vtkCommand::WarningEvent, messages);
+    mapper->SetNonConvexModeToConvexify();
+    scene.Show(mapper, grid, { -0.9, 0.75, 0.9 }, { 0.5, 0.3, 0.3 });
+    scene.Window->Render();
+    scene.Window->Render();
+    std::cout << "no Convexifier: " << mapper->GetNumberOfPeels() << " peels, ["
+              << messages->Warnings << "]\n";
+    if (mapper->GetNumberOfPeels() < 2 ||
+        messages->Warnings.find("No Convexifier") == std::string::npos)
+    {
+      std::cout << "FAILED: NON_CONVEX_CONVEXIFY without a Convexifier did not warn and peel\n";
+      ++errors;
+    }
   }
   return errors ? 1 : 0;
 }
