@@ -76,8 +76,8 @@ def main():
     args = parser.parse_args()
 
     import ppiray
-    from vtkmodules.vtkRenderingCore import vtkRenderWindow, vtkRenderer, vtkVolume
-    from ppiray_scene import compare_with_reference, reference_rgba, volume_property, window_rgb
+    from ppiray_scene import (compare_with_reference, reference_rgba, scene, volume_property,
+                              window_rgb)
 
     start = time.perf_counter()
     grid = tetrahedral_block(args.voxels)
@@ -89,16 +89,7 @@ def main():
     prop.SetScalarOpacityUnitDistance(0.5)
 
     mapper = ppiray.vtkUnstructuredGridGPURayCastMapper()
-    mapper.SetInputData(grid)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
-    window = vtkRenderWindow()
-    window.SetMultiSamples(0)
-    window.SetSize(args.size, args.size)
-    renderer = vtkRenderer()
-    window.AddRenderer(renderer)
-    renderer.AddVolume(volume)
+    window, renderer = scene(grid, mapper, args.size, prop)
     camera = renderer.GetActiveCamera()
     camera.SetPosition(2.5, -1.8, 2.0)
     camera.SetFocalPoint(0.0, 0.0, 0.0)
@@ -121,8 +112,8 @@ def main():
     image = window_rgb(window)
     # The mapper's CPU and GPU copies go before the reference builds its own.
     window.Finalize()
-    volume.SetMapper(None)
-    del window, renderer, volume, mapper
+    renderer.RemoveAllViewProps()
+    del window, renderer, mapper
     rgba, seconds = reference_rgba(grid, prop, camera, args.check)
     c = compare_with_reference(image, rgba)
     print("check %dx%d against the reference (%.0f s): %d pixels covered, p99 %.2f, max %.2f /255, "
