@@ -299,6 +299,7 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
 
   int peel = 0;
   this->Continuations = 0;
+  this->CellSteps = 0;
   bool finished = true;
   if (frame.Section && !frame.Section->empty() && this->EnterAtNearPlane(context, frame, reporter))
   {
@@ -500,9 +501,29 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
   {
     texture->Deactivate();
   }
+  if (frame.CountCellSteps)
+  {
+    this->CellSteps += this->FinishedRaySteps(frame);
+  }
   fbo->RemoveColorAttachment(2);
   fbo->RemoveColorAttachment(1);
   this->Current = next;
+}
+
+//------------------------------------------------------------------------------
+long long vtkPPIRayDepthPeeling::FinishedRaySteps(const Frame& frame)
+{
+  // march_common_fs.glsl's third output: (continuation code, steps so far).
+  std::vector<float> texels(2 * static_cast<size_t>(frame.Width) * frame.Height);
+  this->Framebuffer->ActivateReadBuffer(2);
+  glReadPixels(0, 0, frame.Width, frame.Height, GL_RG, GL_FLOAT, texels.data());
+  this->Framebuffer->DeactivateReadBuffer();
+  long long steps = 0;
+  for (size_t i = 0; i < texels.size(); i += 2)
+  {
+    steps += texels[i] > 0.0f ? 0 : static_cast<long long>(texels[i + 1]);
+  }
+  return steps;
 }
 
 //------------------------------------------------------------------------------

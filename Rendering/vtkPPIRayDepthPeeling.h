@@ -55,6 +55,8 @@ public:
     // Clipping planes in the local frame, (n, d) each, n . x + d >= 0 kept
     // (at most 6), or null.
     const std::vector<float>* ClippingPlanes = nullptr;
+    // Count the march's cell steps (a read-back per march pass: slow).
+    bool CountCellSteps = false;
   };
   /** Binds the march program's inputs other than the peeling's own. */
   using MarchInputs = std::function<void(vtkShaderProgram*, std::vector<vtkTextureObject*>&)>;
@@ -72,6 +74,12 @@ public:
    * budget (march_common_fs.glsl) and were continued.
    */
   int GetNumberOfContinuations() const { return this->Continuations; }
+
+  /**
+   * Cell steps the last frame's marches took, over every pixel and peel
+   * (Frame::CountCellSteps; else 0).
+   */
+  long long GetNumberOfCellSteps() const { return this->CellSteps; }
 
   /** Continuation passes after one march, at most (then a warning). */
   static constexpr int MaximumContinuations = 1024;
@@ -107,6 +115,10 @@ private:
   // next march starts no new ray).
   bool Unfinished(vtkOpenGLRenderWindow* context);
   void Composite(vtkOpenGLRenderWindow* context, const Frame& frame);
+  // The steps of the rays the last march finished: the continuation
+  // target's step counts where it holds no continuation (a continued ray is
+  // counted when it finishes, its count carried across passes).
+  long long FinishedRaySteps(const Frame& frame);
   // The viewing ray's uniforms (ray_fs.glsl): clipToLocal, the clipping planes.
   static void SetRayUniforms(vtkShaderProgram* program, const Frame& frame);
 
@@ -130,6 +142,7 @@ private:
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> UnfinishedQuad;
   int Continuations = 0;
+  long long CellSteps = 0;
 
   vtkShaderProgram* SectionProgram = nullptr; // owned by the shader cache
   vtkNew<vtkOpenGLVertexArrayObject> SectionVAO;

@@ -528,6 +528,7 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
 {
   this->NumberOfPeels = 0;
   this->NumberOfContinuations = 0;
+  this->NumberOfCellSteps = 0;
   if (this->GetInputAlgorithm())
   {
     this->GetInputAlgorithm()->Update();
@@ -616,6 +617,7 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   frame.Section = &in.Section;
   this->ClippingPlanesInLocalFrame(localToWorld, in.ClippingPlanes);
   frame.ClippingPlanes = &in.ClippingPlanes;
+  frame.CountCellSteps = this->CountCellSteps;
   const double cells = static_cast<double>(in.Cells->GetNumberOfCells());
   const int maximumSteps =
     this->MaximumNumberOfSteps > 0
@@ -646,6 +648,7 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   this->NumberOfPeels =
     std::max(0, in.Peeling.Render(context, frame, *in.Cells, *march, marchInputs, cut, this));
   this->NumberOfContinuations = in.Peeling.GetNumberOfContinuations();
+  this->NumberOfCellSteps = static_cast<vtkIdType>(in.Peeling.GetNumberOfCellSteps());
   if (cut)
   {
     vtkWarningMacro(
@@ -677,6 +680,8 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "TerminationOpacity: " << this->TerminationOpacity << "\n";
   os << indent << "NumberOfPeels: " << this->NumberOfPeels << "\n";
   os << indent << "NumberOfContinuations: " << this->NumberOfContinuations << "\n";
+  os << indent << "CountCellSteps: " << this->CountCellSteps << "\n";
+  os << indent << "NumberOfCellSteps: " << this->NumberOfCellSteps << "\n";
   os << indent << "MaximumBufferTexels: " << this->MaximumBufferTexels << "\n";
   os << indent << "GeometryUploadCount: " << this->GetGeometryUploadCount() << "\n";
   os << indent << "FieldUploadCount: " << this->GetFieldUploadCount() << "\n";

@@ -345,6 +345,23 @@ public:
    */
   vtkGetMacro(NumberOfContinuations, int);
 
+  ///@{
+  /**
+   * Count the cell steps of every ray (default off): each march pass's step
+   * counts are read back from the GPU, which stalls the frame. For
+   * benchmarks (cell steps per second), not for interactive use.
+   */
+  vtkSetMacro(CountCellSteps, vtkTypeBool);
+  vtkGetMacro(CountCellSteps, vtkTypeBool);
+  vtkBooleanMacro(CountCellSteps, vtkTypeBool);
+  ///@}
+
+  /**
+   * Cell steps the last frame's rays took, over every pixel and peel (a step
+   * crosses one cell, or one piece of a folded cell); 0 unless CountCellSteps.
+   */
+  vtkGetMacro(NumberOfCellSteps, vtkIdType);
+
   /**
    * Bytes this mapper holds on the GPU (cell textures, boundary, transfer
    * function, Psi table, render targets).
@@ -389,6 +406,8 @@ protected:
   double TerminationOpacity = 0.999;
   int NumberOfPeels = 0;
   int NumberOfContinuations = 0;
+  vtkTypeBool CountCellSteps = 0;
+  vtkIdType NumberOfCellSteps = 0;
 
   // Stages of Render(), each refreshing a collaborator when its source
   // changed: the cells (tetrahedra or hexahedra), the scalar field in them,

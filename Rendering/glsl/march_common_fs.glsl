@@ -78,6 +78,17 @@ void continuationCell(float code, out int cell, out int entryFace, out bool back
   entryFace = cellFace - cell * (FACES + 1) - 1;
 }
 
+// The third output at the end of a march: the continuation (0: none) and the
+// steps taken in this peel. A ray that finished inside the loop broke before
+// counting the cell it stopped in: counted here, so that the steps of the
+// finished rays of every pass sum to the cells the rays visited (what
+// vtkUnstructuredGridGPURayCastMapper::CountCellSteps reads).
+void writeContinuation(float continuation, int step)
+{
+  bool finished = continuation == 0.0 && step < maximumSteps;
+  fragOutput2 = vec4(continuation, float(finished ? step + 1 : step), 0.0, 0.0);
+}
+
 // Passes the earlier peels' colour and exit through (in case this pixel has no
 // entry) and returns the boundary face code of the triangle the ray enters by
 // in this peel, or -1. `resume`: where the earlier peel left the mesh; the

@@ -304,5 +304,5 @@ void main()
     entryFace = next - FACES * cell;
   }
   finishPeel(before, color, reached, projection);
-  fragOutput2 = vec4(continuation, float(step), 0.0, 0.0);
+  writeContinuation(continuation, step);
 }

@@ -425,5 +425,5 @@ void main()
     mask = hexNeighborsTexel(NEIGHBOR_TEXELS * cell + 1).z;
   }
   finishPeel(before, color, reached, projection);
-  fragOutput2 = vec4(continuation, float(step), 0.0, 0.0);
+  writeContinuation(continuation, step);
 }

@@ -2,9 +2,11 @@
 // VTK's own unstructured volume mappers on the same scene, same machine, same
 // run. Prints one row per mapper: median ms per frame over an orbit of views
 // (after a warm-up frame; every frame ends with WaitForCompletion), tetrahedra
-// per second, GPU bytes per tetrahedron, and the speed-up of PPIRay.
+// per second, GPU bytes per tetrahedron, the speed-up of PPIRay and, for
+// PPIRay, the cell steps its rays take per frame (counted on a second,
+// untimed pass over the orbit) and per second (at the median frame time).
 //
-//   ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]
+//   ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]
 //                   [--views N] [--peer-views N] [--inside] [--check N]
 //                   [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]
 //
@@ -28,6 +30,7 @@
 #include "vtkRTAnalyticSource.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
 #include "vtkSmartPointer.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGrid.h"
@@ -48,6 +51,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -58,8 +62,7 @@ struct Options
 {
   std::string File;
   int Wavelet = 32;
-  int Width = 512;
-  int Height = 512;
+  std::vector<std::pair<int, int>> Sizes; // window sizes, measured in turn (default 512x512)
   int Views = 8;
   int PeerViews = 2;
   std::string Mappers = "ppiray,pt,raycast";
@@ -70,9 +73,11 @@ struct Options
 struct Row
 {
   std::string Name;
+  std::string Size;
   double Ms = 0;
   int Frames = 0;
   double GPUBytes = -1;
+  double CellStepsPerFrame = -1; // mean over the orbit (PPIRay only)
   bool CheckFailed = false;
 };
 
@@ -99,7 +104,85 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadScene(const Options& o)
   return tetrahedralize->GetOutput();
 }
 
-Row Measure(const std::string& name, vtkUnstructuredGridVolumeMapper* mapper,
+// The frames of one orbit at the window's current size (after a warm-up
+// frame); for PPIRay also its cell steps and, with `check`, the last view
+// against the reference at --check's size.
+Row MeasureOrbit(const std::string& name, vtkRenderWindow* window,
+  vtkUnstructuredGridVolumeMapper* mapper, vtkUnstructuredGrid* grid, vtkVolumeProperty* property,
+  const Options& o, int views, bool check)
+{
+  vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
+  vtkCamera* camera = renderer->GetActiveCamera();
+  window->Render(); // warm-up: uploads, shader compilation, sorting structures
+  window->WaitForCompletion();
+  static bool reported = false;
+  if (!reported)
+  {
+    // The OpenGL the numbers were taken on: vendor, renderer, version.
+    std::istringstream capabilities(window->ReportCapabilities());
+    std::string line;
+    while (std::getline(capabilities, line))
+    {
+      if (line.rfind("OpenGL ", 0) == 0 && line.find("extensions") == std::string::npos)
+      {
+        std::cout << line << "\n";
+      }
+    }
+    reported = true;
+  }
+  // The next view of the orbit: turning about the centre, or about itself.
+  auto nextView = [&]() { o.Inside ? camera->Yaw(360.0 / views) : camera->Azimuth(360.0 / views); };
+  std::vector<double> times;
+  vtkNew<vtkTimerLog> timer;
+  for (int v = 0; v < views; ++v)
+  {
+    nextView();
+    timer->StartTimer();
+    window->Render();
+    window->WaitForCompletion();
+    timer->StopTimer();
+    times.push_back(1000.0 * timer->GetElapsedTime());
+  }
+  std::sort(times.begin(), times.end());
+  Row row;
+  row.Name = name;
+  row.Ms = times[times.size() / 2];
+  row.Frames = views;
+  if (auto* ours = vtkUnstructuredGridGPURayCastMapper::SafeDownCast(mapper))
+  {
+    row.GPUBytes = static_cast<double>(ours->GetGPUMemorySize());
+    // The same orbit again, untimed, counting the march's cell steps (a
+    // read-back per pass).
+    ours->CountCellStepsOn();
+    double steps = 0;
+    for (int v = 0; v < views; ++v)
+    {
+      nextView();
+      window->Render();
+      steps += static_cast<double>(ours->GetNumberOfCellSteps());
+    }
+    ours->CountCellStepsOff();
+    row.CellStepsPerFrame = steps / views;
+    if (check)
+    {
+      window->SetSize(o.Check, o.Check);
+      window->Render();
+      const auto pixels = ppiray_test::CheckPixels(
+        renderer, grid, property, ppiray_test::ReadRGB(window), o.Check, o.Check);
+      row.CheckFailed = pixels.NaNPixels > 0 || pixels.P99 > 1.0 || pixels.MaxDifference > 1.0 ||
+                        pixels.Pixels == 0;
+      std::printf("pixel check %s %dx%d against the reference: %d pixels covered, p99 %.2f, max "
+                  "%.2f /255, %d NaN: %s\n",
+        name.c_str(), o.Check, o.Check, pixels.Pixels, pixels.P99, pixels.MaxDifference,
+        pixels.NaNPixels, row.CheckFailed ? "FAILED" : "passed");
+    }
+  }
+  return row;
+}
+
+// One orbit of `views` frames per window size; the window and the mapper are
+// kept from one size to the next (the mapper's GPU data is built once).
+std::vector<Row> Measure(const std::string& name, vtkUnstructuredGridVolumeMapper* mapper,
   vtkUnstructuredGrid* grid, const Options& o, int views)
 {
   double range[2];
@@ -126,7 +209,7 @@ Row Measure(const std::string& name, vtkUnstructuredGridVolumeMapper* mapper,
   renderer->AddVolume(volume);
   vtkNew<vtkRenderWindow> window;
   window->SetMultiSamples(0);
-  window->SetSize(o.Width, o.Height);
+  window->SetSize(o.Sizes[0].first, o.Sizes[0].second);
   window->AddRenderer(renderer);
   vtkCamera* camera = renderer->GetActiveCamera();
   if (o.Inside)
@@ -142,49 +225,20 @@ Row Measure(const std::string& name, vtkUnstructuredGridVolumeMapper* mapper,
     renderer->ResetCamera();
   }
 
-  window->Render(); // warm-up: uploads, shader compilation, sorting structures
-  window->WaitForCompletion();
-  std::vector<double> times;
-  vtkNew<vtkTimerLog> timer;
-  for (int v = 0; v < views; ++v)
+  std::vector<Row> rows;
+  for (const auto& size : o.Sizes)
   {
-    if (o.Inside)
-    {
-      camera->Yaw(360.0 / views);
-    }
-    else
-    {
-      camera->Azimuth(360.0 / views);
-    }
-    timer->StartTimer();
-    window->Render();
-    window->WaitForCompletion();
-    timer->StopTimer();
-    times.push_back(1000.0 * timer->GetElapsedTime());
+    window->SetSize(size.first, size.second);
+    const bool check = o.Check > 0 && &size == &o.Sizes.back();
+    rows.push_back(MeasureOrbit(name, window, mapper, grid, property, o, views, check));
+    rows.back().Size = std::to_string(size.first) + "x" + std::to_string(size.second);
   }
-  std::sort(times.begin(), times.end());
-  Row row;
-  row.Name = name;
-  row.Ms = times[times.size() / 2];
-  row.Frames = views;
-  if (auto* ours = vtkUnstructuredGridGPURayCastMapper::SafeDownCast(mapper))
-  {
-    row.GPUBytes = static_cast<double>(ours->GetGPUMemorySize());
-    if (o.Check > 0)
-    {
-      window->SetSize(o.Check, o.Check);
-      window->Render();
-      const auto check = ppiray_test::CheckPixels(
-        renderer, grid, property, ppiray_test::ReadRGB(window), o.Check, o.Check);
-      row.CheckFailed =
-        check.NaNPixels > 0 || check.P99 > 1.0 || check.MaxDifference > 1.0 || check.Pixels == 0;
-      std::printf("pixel check %s %dx%d against the reference: %d pixels covered, p99 %.2f, max "
-                  "%.2f /255, %d NaN: %s\n",
-        name.c_str(), o.Check, o.Check, check.Pixels, check.P99, check.MaxDifference,
-        check.NaNPixels, row.CheckFailed ? "FAILED" : "passed");
-    }
-  }
-  return row;
+  return rows;
+}
+
+void Append(std::vector<Row>& rows, const std::vector<Row>& more)
+{
+  rows.insert(rows.end(), more.begin(), more.end());
 }
 }
 
@@ -205,7 +259,16 @@ int main(int argc, char* argv[])
     }
     else if (arg == "--size")
     {
-      std::sscanf(next().c_str(), "%dx%d", &o.Width, &o.Height);
+      std::stringstream sizes(next());
+      std::string size;
+      while (std::getline(sizes, size, ','))
+      {
+        int w = 0, h = 0;
+        if (std::sscanf(size.c_str(), "%dx%d", &w, &h) == 2 && w > 0 && h > 0)
+        {
+          o.Sizes.emplace_back(w, h);
+        }
+      }
     }
     else if (arg == "--views")
     {
@@ -230,7 +293,7 @@ int main(int argc, char* argv[])
     else
     {
       std::cout
-        << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH]"
+        << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]"
            " [--views N] [--peer-views N] [--inside] [--check N]"
            " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]\n\n"
            "Frame time of PPIRay against VTK's unstructured volume mappers on one scene, same\n"
@@ -238,7 +301,8 @@ int main(int argc, char* argv[])
            "  --file MESH.vtu     a tetrahedral mesh and its point scalars (default: the wavelet)\n"
            "  --wavelet N         vtkRTAnalyticSource over [-N, N]^3 split into tetrahedra\n"
            "                      (default 32: 1.31 M tetrahedra)\n"
-           "  --size WxH          window size (default 512x512)\n"
+           "  --size WxH[,WxH..]  window sizes, measured in turn with the same window and\n"
+           "                      mapper (default 512x512)\n"
            "  --views N           views on the orbit for PPIRay and PT (default 8)\n"
            "  --peer-views N      views for the CPU mappers raycast, zsweep (default 2)\n"
            "  --inside            camera at the mesh's centre, turning about itself (default "
@@ -254,13 +318,23 @@ int main(int argc, char* argv[])
     }
   }
 
+  if (o.Sizes.empty())
+  {
+    o.Sizes.emplace_back(512, 512);
+  }
+  std::string sizes;
+  for (const auto& size : o.Sizes)
+  {
+    sizes +=
+      (sizes.empty() ? "" : ", ") + std::to_string(size.first) + "x" + std::to_string(size.second);
+  }
   vtkSmartPointer<vtkUnstructuredGrid> grid = LoadScene(o);
   const double tets = static_cast<double>(grid->GetNumberOfCells());
   std::cout << "scene: "
             << (o.File.empty() ? "wavelet [-" + std::to_string(o.Wavelet) + ", " +
                                    std::to_string(o.Wavelet) + "]^3 tetrahedralized"
                                : o.File)
-            << ", " << grid->GetNumberOfCells() << " cells, " << o.Width << "x" << o.Height
+            << ", " << grid->GetNumberOfCells() << " cells, " << sizes
             << (o.Inside ? ", camera inside" : "") << "\n";
 
   std::vector<Row> rows;
@@ -278,7 +352,7 @@ int main(int argc, char* argv[])
         : name == "ppiray-average" ? vtkUnstructuredGridGPURayCastMapper::AVERAGE_COLOR
         : name == "ppiray-full"    ? vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION
                                    : vtkUnstructuredGridGPURayCastMapper::PARTIAL_PRE_INTEGRATION);
-      rows.push_back(
+      Append(rows,
         Measure(std::string("PPIRay ") + m->GetIntegrationModeAsString(), m, grid, o, o.Views));
       if (name == "ppiray-full")
       {
@@ -289,21 +363,21 @@ int main(int argc, char* argv[])
     else if (name == "pt")
     {
       vtkNew<vtkProjectedTetrahedraMapper> m;
-      rows.push_back(Measure("vtkProjectedTetrahedraMapper", m, grid, o, o.Views));
+      Append(rows, Measure("vtkProjectedTetrahedraMapper", m, grid, o, o.Views));
     }
     else if (name == "raycast")
     {
       vtkNew<vtkUnstructuredGridVolumeRayCastMapper> m;
       m->SetImageSampleDistance(1.0);
       m->AutoAdjustSampleDistancesOff();
-      rows.push_back(Measure("vtkUnstructuredGridVolumeRayCastMapper", m, grid, o, o.PeerViews));
+      Append(rows, Measure("vtkUnstructuredGridVolumeRayCastMapper", m, grid, o, o.PeerViews));
     }
     else if (name == "zsweep")
     {
       vtkNew<vtkUnstructuredGridVolumeZSweepMapper> m;
       m->SetImageSampleDistance(1.0);
       m->AutoAdjustSampleDistancesOff();
-      rows.push_back(Measure("vtkUnstructuredGridVolumeZSweepMapper", m, grid, o, o.PeerViews));
+      Append(rows, Measure("vtkUnstructuredGridVolumeZSweepMapper", m, grid, o, o.PeerViews));
     }
   }
 
@@ -343,19 +417,20 @@ int main(int argc, char* argv[])
       1000.0 * timer->GetElapsedTime(), triangles.size() / 3);
   }
 
-  double ours = 0;
+  std::map<std::string, double> ours; // PPIRay's default mode, per window size
   bool checkFailed = false;
   for (const Row& r : rows)
   {
     if (r.Name == "PPIRay PARTIAL_PRE_INTEGRATION")
     {
-      ours = r.Ms;
+      ours[r.Size] = r.Ms;
     }
     checkFailed = checkFailed || r.CheckFailed;
   }
   std::printf(
-    "\n| mapper | ms/frame (median) | frames | M tets/s | GPU B/tet | PPIRay speed-up |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|\n");
+    "\n| mapper | ms/frame (median) | frames | M tets/s | GPU B/tet | M cell steps/frame | M cell "
+    "steps/s | PPIRay speed-up | size |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---|\n");
   for (const Row& r : rows)
   {
     char gpu[32] = "n/a";
@@ -364,12 +439,19 @@ int main(int argc, char* argv[])
       std::snprintf(gpu, sizeof(gpu), "%.1f", r.GPUBytes / tets);
     }
     char speedup[32] = "";
-    if (ours > 0)
+    if (ours.count(r.Size))
     {
-      std::snprintf(speedup, sizeof(speedup), "%.2fx", r.Ms / ours);
+      std::snprintf(speedup, sizeof(speedup), "%.2fx", r.Ms / ours[r.Size]);
     }
-    std::printf("| %s | %.1f | %d | %.2f | %s | %s |\n", r.Name.c_str(), r.Ms, r.Frames,
-      tets / r.Ms / 1000.0, gpu, speedup);
+    char steps[32] = "n/a";
+    char stepRate[32] = "n/a";
+    if (r.CellStepsPerFrame >= 0)
+    {
+      std::snprintf(steps, sizeof(steps), "%.2f", r.CellStepsPerFrame / 1.0e6);
+      std::snprintf(stepRate, sizeof(stepRate), "%.1f", r.CellStepsPerFrame / r.Ms / 1000.0);
+    }
+    std::printf("| %s | %.1f | %d | %.2f | %s | %s | %s | %s | %s |\n", r.Name.c_str(), r.Ms,
+      r.Frames, tets / r.Ms / 1000.0, gpu, steps, stepRate, speedup, r.Size.c_str());
   }
   return checkFailed ? 1 : 0;
 }

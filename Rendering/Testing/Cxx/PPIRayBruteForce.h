@@ -11,7 +11,10 @@
 // colour * tau, tau = opacity / unit distance), constant per step:
 //   C += T c (1 - exp(-tau Step)),  T *= exp(-tau Step)
 // (midpoint rule: error O(Step^2) where the field is smooth, O(tau Step) at
-// the mesh boundary and at cell-scalar jumps).
+// the mesh boundary and at cell-scalar jumps). It also counts the cells each
+// ray meets (a sample in another cell than the last sample's: crossings
+// shorter than Step can be missed) and the rays that become opaque (below a
+// transmittance of 0.001, where a renderer's early termination stops).
 #ifndef PPIRayBruteForce_h
 #define PPIRayBruteForce_h
 
@@ -44,6 +47,8 @@ struct BruteForceImage
 {
   std::vector<double> RGB;
   long long Samples = 0;
+  long long CellsMet = 0;
+  int OpaqueRays = 0;
 };
 
 inline BruteForceImage BruteForceMarch(vtkRenderer* ren, vtkUnstructuredGrid* grid,
@@ -81,7 +86,8 @@ inline BruteForceImage BruteForceMarch(vtkRenderer* ren, vtkUnstructuredGrid* gr
   }
   BruteForceImage image;
   image.RGB.assign(3 * rays.size(), 0.0);
-  std::vector<long long> samples(rays.size(), 0);
+  std::vector<long long> samples(rays.size(), 0), cellsMet(rays.size(), 0);
+  std::vector<char> opaque(rays.size(), 0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(rays.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -131,6 +137,7 @@ inline BruteForceImage BruteForceMarch(vtkRenderer* ren, vtkUnstructuredGrid* gr
           {
             current = locator->FindCell(x, 0.0, cell, subId, pcoords, weights.data());
             inside = current >= 0;
+            cellsMet[r] += inside ? 1 : 0;
           }
           ++samples[r];
           if (!inside)
@@ -162,11 +169,14 @@ inline BruteForceImage BruteForceMarch(vtkRenderer* ren, vtkUnstructuredGrid* gr
         {
           image.RGB[3 * r + i] = rgb[i];
         }
+        opaque[r] = transmittance < 0.001;
       }
     });
-  for (long long n : samples)
+  for (size_t r = 0; r < rays.size(); ++r)
   {
-    image.Samples += n;
+    image.Samples += samples[r];
+    image.CellsMet += cellsMet[r];
+    image.OpaqueRays += opaque[r];
   }
   return image;
 }

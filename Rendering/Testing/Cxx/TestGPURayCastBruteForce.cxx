@@ -16,7 +16,10 @@
 // cell-scalar jumps at +-Step/2: up to tau Step of a pixel's colour, about
 // 0.5/255 here), max <= 2 between GPU and reference (both exact: rounding of
 // each to 8 bits and the 0.1/255 transfer-function tolerance); covered pixel
-// counts equal within 1 %; no NaN. Documentation/accuracy.md has the numbers.
+// counts equal within 1 %; no NaN; where the march sees every cell the mapper
+// steps through (no flat, folded or overlapping cells) and no ray becomes
+// opaque, the mapper's count of cell steps (CountCellSteps) within -0.1 % and
+// +1 % of the cells the march meets. Documentation/accuracy.md has the numbers.
 
 #include "PPIRayBruteForce.h"
 #include "PPIRayImageCompare.h"
@@ -105,7 +108,14 @@ struct SceneCase
   std::function<void(vtkUnstructuredGridGPURayCastMapper*)> Configure;
   std::string BruteForceArray; // if the march reads another array than the mapper
   int MaximumPeels = 0;        // if > 0, the most depth-peeling passes the geometry needs
+  // Whether the march's count of cells met is the mapper's count of cell
+  // steps: not where the mapper steps through cells no sample can be in
+  // (flat cells, the walk back through a fold) or one sample is in two cells
+  // (overlapping parts).
+  bool CellStepsComparable = true;
 };
+
+int CellStepScenes = 0; // scenes whose cell steps were compared
 
 // Scalars "s" = 100 Blob / 1.3 on n^3 voxels over [0, 1]^3 split into tetrahedra.
 vtkSmartPointer<vtkUnstructuredGrid> Block(
@@ -214,6 +224,7 @@ int Run(const SceneCase& scene)
     mapper->SetScalarModeToUseCellFieldData();
   }
   mapper->SelectScalarArray(scene.Array.c_str());
+  mapper->CountCellStepsOn();
   if (scene.Configure)
   {
     scene.Configure(mapper);
@@ -278,6 +289,20 @@ int Run(const SceneCase& scene)
   fail(gpuMarch.P99 > 1.0 || gpuMarch.Max > 3.0, "GPU against the march");
   fail(refMarch.P99 > 1.0 || refMarch.Max > 3.0, "reference against the march");
   fail(gpuRef.P99 > 1.0 || gpuRef.Max > 2.0, "GPU against the reference");
+  if (scene.CellStepsComparable && march.OpaqueRays == 0)
+  {
+    // The same rays: every cell the march meets the mapper steps through;
+    // the march misses crossings shorter than its step and those within
+    // vtkCell::EvaluatePosition's parametric tolerance (0.001) of the last
+    // sample's cell (Documentation/accuracy.md: +0.6 % here, +1.4 % with a
+    // step 4 times longer). A count one cell short per ray is 10-13 % low.
+    const double steps = static_cast<double>(mapper->GetNumberOfCellSteps());
+    const double met = static_cast<double>(march.CellsMet);
+    std::printf("%-24s cell steps %.0f, cells met by the march %.0f (%+.3f %%)\n",
+      scene.Name.c_str(), steps, met, 100.0 * (steps - met) / met);
+    fail(!(steps >= 0.999 * met && steps <= 1.01 * met), "cell steps against the march");
+    ++CellStepScenes;
+  }
   if (scene.MaximumPeels > 0)
   {
     std::printf("%-24s peels %d (at most %d)\n", scene.Name.c_str(), mapper->GetNumberOfPeels(),
@@ -396,17 +421,17 @@ int TestGPURayCastBruteForce(int, char*[])
       grid->InsertNextCell(VTK_TETRA, 4, flat);
     }
     scenes.push_back({ "zero-volume cells", grid, "s", false,
-      [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); }, nullptr, "", 1 });
+      [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); }, nullptr, "", 1, false });
   }
   scenes.push_back({ "quadrilateral slivers", MismatchedVoxels(6), "s", false,
-    [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); }, nullptr, "", 1 });
+    [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); }, nullptr, "", 1, false });
   {
     // A layer of inverted cells: the mesh folds back on itself.
     auto grid = Block(6, All);
     ppiray_test::FoldLayers(grid);
     ppiray_test::WorldLinearField(grid);
     scenes.push_back({ "folded layer", grid, "s", false,
-      [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); } });
+      [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); }, nullptr, "", 0, false });
   }
   {
     // A second block (half the size) overlapping the first, unconnected.
@@ -424,7 +449,7 @@ int TestGPURayCastBruteForce(int, char*[])
     vtkSmartPointer<vtkUnstructuredGrid> grid = append->GetOutput();
     ppiray_test::WorldLinearField(grid);
     scenes.push_back({ "overlapping parts", grid, "s", false,
-      [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); } });
+      [](vtkVolumeProperty* p) { CoolToWarm(p, 0.0, 1.3, 0.9); }, nullptr, "", 0, false });
   }
   scenes.push_back({ "scalars near 1e6", Block(6, All, 1.0, 1e6), "s", false,
     [](vtkVolumeProperty* p) { CoolToWarm(p, 1e6, 1e6 + 1.3, 0.9); } });
@@ -449,6 +474,11 @@ int TestGPURayCastBruteForce(int, char*[])
   for (const auto& scene : scenes)
   {
     errors += Run(scene);
+  }
+  if (CellStepScenes < 5)
+  {
+    std::printf("FAILED: cell steps compared in %d scenes, expected at least 5\n", CellStepScenes);
+    ++errors;
   }
   return errors == 0 ? 0 : 1;
 }
