@@ -21,6 +21,7 @@
 #include "vtkPoints.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridAlgorithm.h"
 #include "vtkVolume.h"
@@ -211,6 +212,14 @@ vtkUnstructuredGridBase* vtkUnstructuredGridGPURayCastMapper::RenderedGrid(
     return input;
   }
   auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
+  if (!this->Convexifier)
+  {
+    // One registered with VTK's object factory: loading PPIRay::Convexify
+    // registers vtkUnstructuredGridConvexify (this module does not link it).
+    auto made = vtkSmartPointer<vtkObject>::Take(
+      vtkObjectFactory::CreateInstance("vtkUnstructuredGridConvexify"));
+    this->SetConvexifier(vtkUnstructuredGridAlgorithm::SafeDownCast(made));
+  }
   if (!this->Convexifier || !grid)
   {
     if (!in.ConvexifyWarned)

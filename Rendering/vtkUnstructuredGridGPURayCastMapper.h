@@ -273,7 +273,10 @@ public:
    * The filter NON_CONVEX_CONVEXIFY runs on the input, pluggable like
    * vtkUnstructuredGridVolumeRayCastMapper's ray integrator: PPIRay's is
    * vtkUnstructuredGridConvexify (module PPIRay::Convexify, GPL through
-   * CGAL, which this module does not depend on).
+   * CGAL, which this module does not depend on). When none is set,
+   * NON_CONVEX_CONVEXIFY makes one with vtkObjectFactory::CreateInstance(
+   * "vtkUnstructuredGridConvexify"): loading PPIRay::Convexify (its library,
+   * its Python module or the PPIRayConvexify ParaView plugin) registers it.
    */
   virtual void SetConvexifier(vtkUnstructuredGridAlgorithm* convexifier);
   vtkGetObjectMacro(Convexifier, vtkUnstructuredGridAlgorithm);

@@ -9,6 +9,7 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkContourValues.h"
 #include "vtkDataSet.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -19,6 +20,7 @@
 #include "vtkRectilinearGrid.h"
 #include "vtkScalarsToColors.h"
 #include "vtkStructuredGrid.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 #include "vtkVolumeProperty.h"
@@ -33,11 +35,25 @@ namespace
 // The name the mapper is registered under with AddVolumeMapper().
 constexpr const char* PPIRayMapperName = "PPIRay";
 
+// Whether the grid's ghost array marks any cell HIDDENCELL.
+bool HasHiddenCells(vtkUnstructuredGrid* grid)
+{
+  vtkUnsignedCharArray* ghosts = grid->GetCellGhostArray();
+  for (vtkIdType c = 0; ghosts && c < ghosts->GetNumberOfValues(); ++c)
+  {
+    if (ghosts->GetValue(c) & vtkDataSetAttributes::HIDDENCELL)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // Whether every cell of `data` is a hexahedron or a voxel (`mixed` false), or
 // one of the linear 3D cells the mapper renders itself: tetrahedra,
 // hexahedra, voxels, wedges and pyramids, split conformingly by the mapper
 // where it does not render them natively (`mixed` true). Tetrahedra alone
-// keep ParaView's usual path.
+// keep ParaView's usual path, unless some are hidden.
 bool RenderedUnsplit(vtkDataSet* data, bool mixed)
 {
   if (vtkStructuredGrid::SafeDownCast(data) || vtkImageData::SafeDownCast(data) ||
@@ -62,7 +78,9 @@ bool RenderedUnsplit(vtkDataSet* data, bool mixed)
       return false;
     }
   }
-  return !tetrahedraOnly; // tetrahedra take ParaView's usual path
+  // Tetrahedra take ParaView's usual path, which drops hidden cells: a grid
+  // with hidden cells (a convexified grid's imaginary cells) keeps them.
+  return !tetrahedraOnly || HasHiddenCells(grid);
 }
 
 // `output` made to hold the cells of `data` as they are (structured cells as
@@ -154,6 +172,12 @@ void vtkPPIRayVolumeRepresentation::SetIntegrationMode(int mode)
 void vtkPPIRayVolumeRepresentation::SetMaximumNumberOfPeels(int peels)
 {
   this->Mapper->SetMaximumNumberOfPeels(peels);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayVolumeRepresentation::SetNonConvexMode(int mode)
+{
+  this->Mapper->SetNonConvexMode(mode);
 }
 
 //------------------------------------------------------------------------------

@@ -52,6 +52,7 @@ public:
   /** Forwarded to vtkUnstructuredGridGPURayCastMapper. */
   void SetIntegrationMode(int mode);
   void SetMaximumNumberOfPeels(int peels);
+  void SetNonConvexMode(int mode);
   void SetPsiTableSize(int size);
   void SetPreIntegrationTableSize(int size);
   void SetTerminationOpacity(double opacity);

@@ -11,6 +11,9 @@
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
 #include "vtkCamera.h"
+#include "vtkObjectFactory.h"
+#include "vtkObjectFactoryCollection.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnstructuredGridConvexify.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 #include "vtkXMLUnstructuredGridReader.h"
@@ -18,6 +21,7 @@
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -145,26 +149,75 @@ int TestGPURayCastConvexified(int, char*[])
     grid->GetPointData()->GetScalars()->GetRange(range);
     errors += Compare("graded_holes.vtu", grid, { 1.0, 0.6, 1.4 }, range[0], range[1]);
   }
-  // NON_CONVEX_CONVEXIFY without a Convexifier: one warning, then peeling.
+  // NON_CONVEX_CONVEXIFY without a Convexifier: one made by VTK's object
+  // factory (this module registers vtkUnstructuredGridConvexify when it is
+  // loaded): the same peels and image as with the filter set explicitly, no
+  // "No Convexifier" warning. With that factory unregistered: that warning,
+  // then peeling.
+  vtkObjectFactory* factory = nullptr;
+  {
+    vtkCollectionSimpleIterator it;
+    auto* factories = vtkObjectFactory::GetRegisteredFactories();
+    factories->InitTraversal(it);
+    while (auto* f = factories->GetNextObjectFactory(it))
+    {
+      factory = std::string(f->GetDescription()) == "PPIRay::Convexify" ? f : factory;
+    }
+  }
+  if (!factory)
+  {
+    std::cout << "FAILED: PPIRay::Convexify registered no object factory\n";
+    return 1;
+  }
+  vtkSmartPointer<vtkObjectFactory> keep = factory; // while unregistered
+  // Peels and image of the tunnel scene in NON_CONVEX_CONVEXIFY.
+  auto render = [](vtkUnstructuredGridAlgorithm* convexifier,
+                  ppiray_test::MessageCollector* messages, bool& made,
+                  std::vector<unsigned char>& image)
   {
     ppiray_test::Scene scene(64, 64);
     auto grid = ppiray_test::TunnelAndBlock();
     ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.7, 0.1);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-    vtkNew<ppiray_test::MessageCollector> messages;
     mapper->AddObserver(vtkCommand::WarningEvent, messages);
     mapper->SetNonConvexModeToConvexify();
+    mapper->SetConvexifier(convexifier);
     scene.Show(mapper, grid, { -0.9, 0.75, 0.9 }, { 0.5, 0.3, 0.3 });
     scene.Window->Render();
     scene.Window->Render();
-    std::cout << "no Convexifier: " << mapper->GetNumberOfPeels() << " peels, ["
-              << messages->Warnings << "]\n";
-    if (mapper->GetNumberOfPeels() < 2 ||
-        messages->Warnings.find("No Convexifier") == std::string::npos)
+    made = vtkUnstructuredGridConvexify::SafeDownCast(mapper->GetConvexifier()) != nullptr;
+    image = ppiray_test::ReadRGB(scene.Window);
+    return mapper->GetNumberOfPeels();
+  };
+  vtkNew<ppiray_test::MessageCollector> explicitMessages;
+  vtkNew<vtkUnstructuredGridConvexify> explicitConvexify;
+  bool made = false;
+  std::vector<unsigned char> explicitImage, image;
+  const int explicitPeels = render(explicitConvexify, explicitMessages, made, explicitImage);
+  for (const bool registered : { true, false })
+  {
+    if (!registered)
     {
-      std::cout << "FAILED: NON_CONVEX_CONVEXIFY without a Convexifier did not warn and peel\n";
+      vtkObjectFactory::UnRegisterFactory(factory);
+    }
+    vtkNew<ppiray_test::MessageCollector> messages;
+    const int peels = render(nullptr, messages, made, image);
+    const bool warned = messages->Warnings.find("No Convexifier") != std::string::npos;
+    std::cout << "no Convexifier set, factory " << (registered ? "registered" : "unregistered")
+              << ": " << peels << " peels (" << explicitPeels
+              << " with the filter set), convexifier " << (made ? "made" : "none") << ", image "
+              << (image == explicitImage ? "equal" : "different") << (warned ? ", warned" : "")
+              << "\n";
+    if (registered ? (!made || peels != explicitPeels || image != explicitImage || warned)
+                   : (made || !warned || peels == explicitPeels))
+    {
+      std::cout << "FAILED: NON_CONVEX_CONVEXIFY without a Convexifier set, factory "
+                << (registered ? "registered: not as with the filter set"
+                               : "unregistered: did not warn and peel")
+                << "\n";
       ++errors;
     }
   }
+  vtkObjectFactory::RegisterFactory(factory);
   return errors ? 1 : 0;
 }

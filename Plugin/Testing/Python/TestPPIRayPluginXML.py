@@ -27,6 +27,7 @@ NEW_VALUES = {
     "IntegrationMode": ("Exact Linear", 1, "GetIntegrationMode"),
     "HexahedronMode": ("Fast", 1, "GetHexahedronMode"),
     "MaximumNumberOfPeels": (7, 7, "GetMaximumNumberOfPeels"),
+    "NonConvexMode": ("Convexify", 1, "GetNonConvexMode"),
     "PsiTableSize": (128, 128, "GetPsiTableSize"),
     "PreIntegrationTableSize": (32, 32, "GetPreIntegrationTableSize"),
     "TerminationOpacity": (0.95, 0.95, "GetTerminationOpacity"),
