@@ -216,7 +216,7 @@ void vtkPPIRayDepthPeeling::CopyOpaqueDepth(
   {
     format = vtkTextureObject::Float32; // no depth buffer: nothing is opaque
   }
-  const int width = frame.Width, height = frame.Height;
+  const int width = frame.TargetWidth, height = frame.TargetHeight;
   if (this->OpaqueDepthFormat != format ||
       this->OpaqueDepth->GetWidth() != static_cast<unsigned>(width) ||
       this->OpaqueDepth->GetHeight() != static_cast<unsigned>(height))
@@ -243,8 +243,10 @@ void vtkPPIRayDepthPeeling::CopyOpaqueDepth(
   bool copied = false;
   if (bits > 0)
   {
-    glBlitFramebuffer(frame.X0, frame.Y0, frame.X0 + width, frame.Y0 + height, 0, 0, width, height,
-      GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    // At a reduced resolution each target pixel takes the depth nearest its
+    // centre.
+    glBlitFramebuffer(frame.X0, frame.Y0, frame.X0 + frame.Width, frame.Y0 + frame.Height, 0, 0,
+      width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     copied = glGetError() == GL_NO_ERROR;
   }
   if (!copied)
@@ -268,7 +270,7 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
   bool& cut, vtkObject* reporter)
 {
   cut = false;
-  if (!this->Prepare(context, frame.Width, frame.Height, cells, reporter))
+  if (!this->Prepare(context, frame.TargetWidth, frame.TargetHeight, cells, reporter))
   {
     return -1;
   }
@@ -284,7 +286,7 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
   this->CopyOpaqueDepth(context, source, frame, reporter);
   vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
   fbo->Bind();
-  state->vtkglViewport(0, 0, frame.Width, frame.Height);
+  state->vtkglViewport(0, 0, frame.TargetWidth, frame.TargetHeight);
   // Nothing accumulated yet; no march has stopped anywhere.
   this->Current = 0;
   this->Layer = 0;
@@ -415,7 +417,8 @@ bool vtkPPIRayDepthPeeling::Enter(
   }
   entry->SetUniformMatrix4x4("localToClip", const_cast<float*>(frame.LocalToClip));
   entry->SetUniformi("firstLayer", firstLayer ? 1 : 0);
-  const float viewport[2] = { static_cast<float>(frame.Width), static_cast<float>(frame.Height) };
+  const float viewport[2] = { static_cast<float>(frame.TargetWidth),
+    static_cast<float>(frame.TargetHeight) };
   entry->SetUniform2f("viewportSize", viewport);
   SetRayUniforms(entry, frame);
   entry->SetUniformf("terminationAlpha", frame.TerminationAlpha);
@@ -514,9 +517,9 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
 long long vtkPPIRayDepthPeeling::FinishedRaySteps(const Frame& frame)
 {
   // march_common_fs.glsl's third output: (continuation code, steps so far).
-  std::vector<float> texels(2 * static_cast<size_t>(frame.Width) * frame.Height);
+  std::vector<float> texels(2 * static_cast<size_t>(frame.TargetWidth) * frame.TargetHeight);
   this->Framebuffer->ActivateReadBuffer(2);
-  glReadPixels(0, 0, frame.Width, frame.Height, GL_RG, GL_FLOAT, texels.data());
+  glReadPixels(0, 0, frame.TargetWidth, frame.TargetHeight, GL_RG, GL_FLOAT, texels.data());
   this->Framebuffer->DeactivateReadBuffer();
   long long steps = 0;
   for (size_t i = 0; i < texels.size(); i += 2)
@@ -552,6 +555,11 @@ void vtkPPIRayDepthPeeling::Composite(vtkOpenGLRenderWindow* context, const Fram
   vtkShaderProgram* program = this->CompositeQuad->Program;
   context->GetShaderCache()->ReadyShaderProgram(program);
   vtkTextureObject* accumulated = this->Accumulated[this->Current];
+  // Scaled up bilinearly from a reduced resolution (premultiplied colour).
+  const bool scaled = frame.TargetWidth != frame.Width || frame.TargetHeight != frame.Height;
+  accumulated->SetMagnificationFilter(
+    scaled ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+  accumulated->SetMinificationFilter(scaled ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
   accumulated->Activate();
   program->SetUniformi("accumulated", accumulated->GetTextureUnit());
   this->CompositeQuad->Render();

@@ -22,6 +22,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
+#include "vtkTimerLog.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridAlgorithm.h"
 #include "vtkVolume.h"
@@ -535,6 +536,17 @@ void vtkUnstructuredGridGPURayCastMapper::WarnAboutOverlappingVolumes(
 //------------------------------------------------------------------------------
 void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
+  // The frame's wall time, for AutoAdjustSampleDistances.
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  this->RenderFrame(ren, vol);
+  timer->StopTimer();
+  this->TimeToDraw = timer->GetElapsedTime();
+}
+
+//------------------------------------------------------------------------------
+void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolume* vol)
+{
   this->NumberOfPeels = 0;
   this->NumberOfContinuations = 0;
   this->NumberOfCellSteps = 0;
@@ -584,6 +596,23 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
   {
     return;
   }
+  if (this->AutoAdjustSampleDistances)
+  {
+    // d <- d sqrt(last frame's time / allocated time), clamped
+    // (vtkUnstructuredGridVolumeRayCastMapper's rule).
+    const double allocated = vol->GetAllocatedRenderTime();
+    const double last = this->TimeToDraw;
+    const double d = last > 0.0 && allocated > 0.0
+                       ? this->ImageSampleDistance * std::sqrt(last / allocated)
+                       : this->ImageSampleDistance;
+    this->ImageSampleDistance =
+      static_cast<float>(std::min<double>(std::max<double>(d, this->MinimumImageSampleDistance),
+        std::max(this->MinimumImageSampleDistance, this->MaximumImageSampleDistance)));
+  }
+  frame.TargetWidth =
+    std::max(1, static_cast<int>(std::ceil(frame.Width / this->ImageSampleDistance)));
+  frame.TargetHeight =
+    std::max(1, static_cast<int>(std::ceil(frame.Height / this->ImageSampleDistance)));
   // A projection (the blend mode's value: maximum, minimum, average intensity,
   // additive), else composite (0).
   const bool projects =
@@ -690,6 +719,10 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "NumberOfPeels: " << this->NumberOfPeels << "\n";
   os << indent << "NumberOfContinuations: " << this->NumberOfContinuations << "\n";
   os << indent << "CountCellSteps: " << this->CountCellSteps << "\n";
+  os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
+  os << indent << "MinimumImageSampleDistance: " << this->MinimumImageSampleDistance << "\n";
+  os << indent << "MaximumImageSampleDistance: " << this->MaximumImageSampleDistance << "\n";
+  os << indent << "AutoAdjustSampleDistances: " << this->AutoAdjustSampleDistances << "\n";
   os << indent << "NumberOfCellSteps: " << this->NumberOfCellSteps << "\n";
   os << indent << "MaximumBufferTexels: " << this->MaximumBufferTexels << "\n";
   os << indent << "GeometryUploadCount: " << this->GetGeometryUploadCount() << "\n";

@@ -350,6 +350,31 @@ public:
 
   ///@{
   /**
+   * Level of detail, as vtkUnstructuredGridVolumeRayCastMapper has it: rays
+   * are cast for one pixel in ImageSampleDistance x ImageSampleDistance
+   * (default 1: every pixel; at least 1) and the image is scaled up
+   * bilinearly. With AutoAdjustSampleDistances (default on) the distance is
+   * chosen each frame from the time the last frame took and the time the
+   * renderer allocates the volume (vtkRenderWindow::SetDesiredUpdateRate:
+   * interactors ask for a high rate while the user interacts), within
+   * [MinimumImageSampleDistance, MaximumImageSampleDistance]:
+   *   d <- d sqrt(last frame's time / allocated time)
+   * (VTK's CPU ray caster's rule): coarser while interacting, every pixel
+   * again on the first frame with time to spare.
+   */
+  vtkSetClampMacro(ImageSampleDistance, float, 1.0f, 100.0f);
+  vtkGetMacro(ImageSampleDistance, float);
+  vtkSetClampMacro(MinimumImageSampleDistance, float, 1.0f, 100.0f);
+  vtkGetMacro(MinimumImageSampleDistance, float);
+  vtkSetClampMacro(MaximumImageSampleDistance, float, 1.0f, 100.0f);
+  vtkGetMacro(MaximumImageSampleDistance, float);
+  vtkSetClampMacro(AutoAdjustSampleDistances, vtkTypeBool, 0, 1);
+  vtkGetMacro(AutoAdjustSampleDistances, vtkTypeBool);
+  vtkBooleanMacro(AutoAdjustSampleDistances, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * Count the cell steps of every ray (default off): each march pass's step
    * counts are read back from the GPU, which stalls the frame. For
    * benchmarks (cell steps per second), not for interactive use.
@@ -411,12 +436,18 @@ protected:
   int NumberOfContinuations = 0;
   vtkTypeBool CountCellSteps = 0;
   vtkIdType NumberOfCellSteps = 0;
+  float ImageSampleDistance = 1.0f;
+  float MinimumImageSampleDistance = 1.0f;
+  float MaximumImageSampleDistance = 10.0f;
+  vtkTypeBool AutoAdjustSampleDistances = 1;
 
   // Stages of Render(), each refreshing a collaborator when its source
   // changed: the cells (tetrahedra or hexahedra), the scalar field in them,
   // the integration mode's tables.
   // The grid rendered: the input, or its convexified copy (NonConvexMode).
   vtkUnstructuredGridBase* RenderedGrid(vtkUnstructuredGridBase* input);
+  // Render() without its timing (TimeToDraw).
+  void RenderFrame(vtkRenderer* ren, vtkVolume* vol);
   bool UpdateCells(vtkUnstructuredGridBase* input, vtkOpenGLRenderWindow* context);
   bool UpdateField(vtkUnstructuredGridBase* input);
   bool UpdateIntegrator(vtkOpenGLRenderWindow* context);
