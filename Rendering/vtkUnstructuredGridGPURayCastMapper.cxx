@@ -91,6 +91,13 @@ public:
       this->ReleaseGraphicsResources(context);
       context->PopContext();
       this->Context = nullptr;
+      // PopContext restores the earlier context only for X windows (VTK's
+      // default PushContext just makes the window current): `window`, where
+      // the caller renders next, is made current again.
+      if (auto* next = vtkOpenGLRenderWindow::SafeDownCast(window))
+      {
+        next->MakeCurrent();
+      }
     }
     else
     {

@@ -19,6 +19,7 @@
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
 #include "vtkCamera.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include "ppirayVTKCompatibility.h"
@@ -272,6 +273,10 @@ int TestGPURayCastWindows(int, char*[])
     scene.Window->Render();
     const GLuint maxName = 4096;
     scene.Window->MakeCurrent();
+    // The window's shared full-screen quad buffer (vtkOpenGLQuadHelper's,
+    // owned by the window, made on first use: a window that blits its frame
+    // has it already, an OSMesa window not) is the window's, not the mapper's.
+    vtkOpenGLRenderWindow::SafeDownCast(scene.Window)->GetTQuad2DVBO();
     const auto before = CountGLObjects(maxName);
     std::array<int, 6> during{};
     {

@@ -3,7 +3,9 @@
 // dense sampling, for every colour space, log scale, clamping off, repeated
 // nodes, sharpness 1 and ParaView's vtkDiscretizableColorTransferFunction:
 // within Tolerance everywhere except in a 1e-9-wide window at each jump;
-// every node a control point; jumps kept as two points at one scalar;
+// every node a control point; jumps (where VTK's evaluation has them: a
+// sharpness of 1 is a step in VTK 9.2, a steep curve in 9.6) kept as two
+// points at one scalar;
 // attenuation opacity / unit distance.
 
 #include "vtkColorTransferFunction.h"
@@ -119,6 +121,22 @@ int Check(const Case& test, vtkColorTransferFunction* color)
       color->GetTable(s, s, 1, table.data() + 3 * i);
     }
   }
+  // Where VTK's own evaluation jumps: neighbouring samples (1/24,000 of the
+  // range apart) more than 0.1 apart. A sharpness of 1 is a step in VTK 9.2
+  // and a steep continuous curve in VTK 9.6: a jump is expected only where
+  // VTK has one.
+  int vtkJumps = 0;
+  for (int i = 1; i < samples; ++i)
+  {
+    const double s0 = first + (last - first) * (i - 1) / (samples - 1);
+    const double s1 = first + (last - first) * i / (samples - 1);
+    bool jump = std::abs(opacity->GetValue(s1) - opacity->GetValue(s0)) > 0.1;
+    for (int c = 0; c < 3; ++c)
+    {
+      jump = jump || std::abs(table[3 * i + c] - table[3 * (i - 1) + c]) > 0.1;
+    }
+    vtkJumps += jump ? 1 : 0;
+  }
   std::vector<double> deviations;
   for (int i = 0; i < samples; ++i)
   {
@@ -160,9 +178,10 @@ int Check(const Case& test, vtkColorTransferFunction* color)
     }
     missing += found ? 0 : 1;
   }
-  std::printf("%-34s %5d control points, %2zu jumps, deviation p99 %.3f max %.3f/255 at %g\n",
-    test.Name.c_str(), cp->GetNumberOfControlPoints(), jumps.size(), 255 * p99, 255 * worst,
-    worstAt);
+  std::printf("%-34s %5d control points, %2zu jumps (VTK's %d), deviation p99 %.3f max %.3f/255 "
+              "at %g\n",
+    test.Name.c_str(), cp->GetNumberOfControlPoints(), jumps.size(), vtkJumps, 255 * p99,
+    255 * worst, worstAt);
   std::fflush(stdout);
   int errors = 0;
   const double bound = test.Bound > 0 ? test.Bound / 255 : cp->GetTolerance();
@@ -173,10 +192,11 @@ int Check(const Case& test, vtkColorTransferFunction* color)
       test.Name.c_str(), 255 * bound);
     ++errors;
   }
-  if (static_cast<int>(jumps.size()) < test.MinimumJumps)
+  const int expectedJumps = std::min(test.MinimumJumps, vtkJumps);
+  if (static_cast<int>(jumps.size()) < expectedJumps)
   {
     std::printf("FAILED: %s: %zu jumps kept, expected at least %d\n", test.Name.c_str(),
-      jumps.size(), test.MinimumJumps);
+      jumps.size(), expectedJumps);
     ++errors;
   }
   if (missing > 0 || cp->GetTruncated())
