@@ -104,6 +104,7 @@ void vtkPPIRayDepthPeeling::ReleaseGraphicsResources(vtkWindow* window)
     glDeleteQueries(1, &this->Query);
     this->Query = 0;
   }
+  this->Times.ReleaseGraphicsResources();
   this->EntryProgram = nullptr;
   this->EntryVAO->ReleaseGraphicsResources();
   this->EntryPoints = nullptr;
@@ -270,10 +271,12 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
   bool& cut, vtkObject* reporter)
 {
   cut = false;
+  this->Times.StartFrame(frame.TimePasses);
   if (!this->Prepare(context, frame.TargetWidth, frame.TargetHeight, cells, reporter))
   {
     return -1;
   }
+  this->Times.Start(vtkPPIRayPassTimes::Setup);
   vtkOpenGLState* state = context->GetState();
   vtkPPIRayPeelingStateRAII saved(state);
   state->vtkglDisable(GL_SCISSOR_TEST);
@@ -328,7 +331,9 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
   }
   fbo->RemoveDepthAttachment();
   state->PopFramebufferBindings();
+  this->Times.Start(vtkPPIRayPassTimes::Composite);
   this->Composite(context, frame);
+  this->Times.EndFrame();
   return peel;
 }
 
@@ -372,6 +377,7 @@ void vtkPPIRayDepthPeeling::ClearEntries(vtkOpenGLRenderWindow* context)
 //------------------------------------------------------------------------------
 bool vtkPPIRayDepthPeeling::Unfinished(vtkOpenGLRenderWindow* context)
 {
+  this->Times.Start(vtkPPIRayPassTimes::ContinuationCheck);
   this->ClearEntries(context);
   vtkShaderProgram* program = this->UnfinishedQuad->Program;
   context->GetShaderCache()->ReadyShaderProgram(program);
@@ -384,6 +390,7 @@ bool vtkPPIRayDepthPeeling::Unfinished(vtkOpenGLRenderWindow* context)
   continuation->Deactivate();
   GLuint samplesPassed = 0;
   glGetQueryObjectuiv(this->Query, GL_QUERY_RESULT, &samplesPassed);
+  this->Times.Stop();
   return samplesPassed > 0;
 }
 
@@ -391,6 +398,7 @@ bool vtkPPIRayDepthPeeling::Unfinished(vtkOpenGLRenderWindow* context)
 bool vtkPPIRayDepthPeeling::Enter(
   vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayCellBuffers& cells, bool firstLayer)
 {
+  this->Times.Start(vtkPPIRayPassTimes::Entry);
   vtkOpenGLState* state = context->GetState();
   vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
   fbo->AddColorAttachment(0, this->EntryTexture);
@@ -436,6 +444,7 @@ bool vtkPPIRayDepthPeeling::Enter(
   }
   GLuint samplesPassed = 0;
   glGetQueryObjectuiv(this->Query, GL_QUERY_RESULT, &samplesPassed);
+  this->Times.Stop();
   this->Layer = 1 - this->Layer;
   return samplesPassed > 0;
 }
@@ -444,6 +453,7 @@ bool vtkPPIRayDepthPeeling::Enter(
 bool vtkPPIRayDepthPeeling::EnterAtNearPlane(
   vtkOpenGLRenderWindow* context, const Frame& frame, vtkObject* reporter)
 {
+  this->Times.Start(vtkPPIRayPassTimes::NearPlaneEntry);
   vtkOpenGLShaderCache* cache = context->GetShaderCache();
   if (this->SectionProgram)
   {
@@ -466,6 +476,7 @@ bool vtkPPIRayDepthPeeling::EnterAtNearPlane(
     4 * sizeof(float), VTK_FLOAT, 4, false);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(frame.Section->size() / 4));
   this->SectionVAO->Release();
+  this->Times.Stop();
   return true;
 }
 
@@ -475,6 +486,7 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
 {
   // From the entry cell to where the ray leaves the mesh, composited under
   // what earlier peels accumulated (ping-pong).
+  this->Times.Start(vtkPPIRayPassTimes::March);
   vtkOpenGLState* state = context->GetState();
   vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
   const int next = 1 - this->Current;
@@ -500,6 +512,7 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
   SetRayUniforms(program, frame);
   marchInputs(program, textures);
   march.Render();
+  this->Times.Stop();
   for (auto* texture : textures)
   {
     texture->Deactivate();

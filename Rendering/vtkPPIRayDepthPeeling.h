@@ -19,7 +19,8 @@
 #ifndef vtkPPIRayDepthPeeling_h
 #define vtkPPIRayDepthPeeling_h
 
-#include "vtkNew.h" // for vtkNew
+#include "vtkNew.h"             // for vtkNew
+#include "vtkPPIRayPassTimes.h" // for vtkPPIRayPassTimes
 
 #include <functional> // for std::function
 #include <memory>     // for std::unique_ptr
@@ -60,6 +61,8 @@ public:
     const std::vector<float>* ClippingPlanes = nullptr;
     // Count the march's cell steps (a read-back per march pass: slow).
     bool CountCellSteps = false;
+    // Time every pass with GL timer queries (waits for the GPU at the end).
+    bool TimePasses = false;
   };
   /** Binds the march program's inputs other than the peeling's own. */
   using MarchInputs = std::function<void(vtkShaderProgram*, std::vector<vtkTextureObject*>&)>;
@@ -83,6 +86,9 @@ public:
    * (Frame::CountCellSteps; else 0).
    */
   long long GetNumberOfCellSteps() const { return this->CellSteps; }
+
+  /** The last frame's GPU time per kind of pass (Frame::TimePasses; else 0). */
+  const vtkPPIRayPassTimes& GetPassTimes() const { return this->Times; }
 
   /** Continuation passes after one march, at most (then a warning). */
   static constexpr int MaximumContinuations = 1024;
@@ -146,6 +152,7 @@ private:
   std::unique_ptr<vtkOpenGLQuadHelper> UnfinishedQuad;
   int Continuations = 0;
   long long CellSteps = 0;
+  vtkPPIRayPassTimes Times;
 
   vtkShaderProgram* SectionProgram = nullptr; // owned by the shader cache
   vtkNew<vtkOpenGLVertexArrayObject> SectionVAO;

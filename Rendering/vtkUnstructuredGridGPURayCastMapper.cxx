@@ -42,6 +42,19 @@
 vtkStandardNewMacro(vtkUnstructuredGridGPURayCastMapper);
 
 static_assert(
+  int(vtkUnstructuredGridGPURayCastMapper::SETUP_PASS) == vtkPPIRayPassTimes::Setup &&
+    int(vtkUnstructuredGridGPURayCastMapper::NEAR_PLANE_ENTRY_PASS) ==
+      vtkPPIRayPassTimes::NearPlaneEntry &&
+    int(vtkUnstructuredGridGPURayCastMapper::ENTRY_PASS) == vtkPPIRayPassTimes::Entry &&
+    int(vtkUnstructuredGridGPURayCastMapper::MARCH_PASS) == vtkPPIRayPassTimes::March &&
+    int(vtkUnstructuredGridGPURayCastMapper::CONTINUATION_CHECK_PASS) ==
+      vtkPPIRayPassTimes::ContinuationCheck &&
+    int(vtkUnstructuredGridGPURayCastMapper::COMPOSITE_PASS) == vtkPPIRayPassTimes::Composite &&
+    int(vtkUnstructuredGridGPURayCastMapper::NUMBER_OF_PASS_KINDS) ==
+      vtkPPIRayPassTimes::NumberOfPasses,
+  "one set of pass kinds");
+
+static_assert(
   int(vtkUnstructuredGridGPURayCastMapper::NO_ISOSURFACES) == ppiray::NoIsoSurfaces &&
     int(vtkUnstructuredGridGPURayCastMapper::EMBEDDED_ISOSURFACES) == ppiray::EmbeddedIsoSurfaces &&
     int(vtkUnstructuredGridGPURayCastMapper::ISOSURFACES_ONLY) == ppiray::IsoSurfacesOnly,
@@ -357,6 +370,24 @@ int vtkUnstructuredGridGPURayCastMapper::GetTransferFunctionUploadCount()
 }
 
 //------------------------------------------------------------------------------
+double vtkUnstructuredGridGPURayCastMapper::GetPassTime(int kind)
+{
+  return this->Internals->Peeling.GetPassTimes().GetMilliseconds(kind);
+}
+
+//------------------------------------------------------------------------------
+int vtkUnstructuredGridGPURayCastMapper::GetNumberOfPasses(int kind)
+{
+  return this->Internals->Peeling.GetPassTimes().GetCount(kind);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkUnstructuredGridGPURayCastMapper::GetPassKindName(int kind)
+{
+  return vtkPPIRayPassTimes::GetName(kind);
+}
+
+//------------------------------------------------------------------------------
 vtkIdType vtkUnstructuredGridGPURayCastMapper::GetGPUMemorySize()
 {
   vtkInternals& in = *this->Internals;
@@ -554,6 +585,9 @@ void vtkUnstructuredGridGPURayCastMapper::Render(vtkRenderer* ren, vtkVolume* vo
 //------------------------------------------------------------------------------
 void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolume* vol)
 {
+  vtkNew<vtkTimerLog> preparation;
+  preparation->StartTimer();
+  this->PreparationTime = 0.0;
   this->NumberOfPeels = 0;
   this->NumberOfContinuations = 0;
   this->NumberOfCellSteps = 0;
@@ -663,6 +697,7 @@ void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolum
   this->ClippingPlanesInLocalFrame(localToWorld, in.ClippingPlanes);
   frame.ClippingPlanes = &in.ClippingPlanes;
   frame.CountCellSteps = this->CountCellSteps;
+  frame.TimePasses = this->TimePasses;
   const double cells = static_cast<double>(in.Cells->GetNumberOfCells());
   const int maximumSteps =
     this->MaximumNumberOfSteps > 0
@@ -690,6 +725,8 @@ void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolum
     }
   };
   bool cut = false;
+  preparation->StopTimer();
+  this->PreparationTime = 1000.0 * preparation->GetElapsedTime();
   this->NumberOfPeels =
     std::max(0, in.Peeling.Render(context, frame, *in.Cells, *march, marchInputs, cut, this));
   this->NumberOfContinuations = in.Peeling.GetNumberOfContinuations();
@@ -726,6 +763,8 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "NumberOfPeels: " << this->NumberOfPeels << "\n";
   os << indent << "NumberOfContinuations: " << this->NumberOfContinuations << "\n";
   os << indent << "CountCellSteps: " << this->CountCellSteps << "\n";
+  os << indent << "TimePasses: " << this->TimePasses << "\n";
+  os << indent << "PreparationTime: " << this->PreparationTime << "\n";
   os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
   os << indent << "MinimumImageSampleDistance: " << this->MinimumImageSampleDistance << "\n";
   os << indent << "MaximumImageSampleDistance: " << this->MaximumImageSampleDistance << "\n";

@@ -390,6 +390,49 @@ public:
    */
   vtkGetMacro(NumberOfCellSteps, vtkIdType);
 
+  ///@{
+  /**
+   * Time every pass of a frame on the GPU (default off): GL timer queries
+   * around each pass, read at the end of the frame, which waits for the GPU.
+   * For benchmarks (where the time goes), not for interactive use.
+   */
+  vtkSetMacro(TimePasses, vtkTypeBool);
+  vtkGetMacro(TimePasses, vtkTypeBool);
+  vtkBooleanMacro(TimePasses, vtkTypeBool);
+  ///@}
+
+  /**
+   * The kinds of pass a frame draws (TimePasses): the opaque depth copy and
+   * target clears, the near-plane sections (camera inside), each layer of
+   * boundary triangles with its occlusion query, each march, each check for
+   * rays left unfinished by the loop budget, the composite.
+   */
+  enum PassKinds
+  {
+    SETUP_PASS = 0,
+    NEAR_PLANE_ENTRY_PASS = 1,
+    ENTRY_PASS = 2,
+    MARCH_PASS = 3,
+    CONTINUATION_CHECK_PASS = 4,
+    COMPOSITE_PASS = 5,
+    NUMBER_OF_PASS_KINDS = 6
+  };
+
+  /**
+   * GPU milliseconds the last frame spent in passes of `kind`, and how many
+   * it drew (0 unless TimePasses and the GL has timer queries).
+   */
+  double GetPassTime(int kind);
+  int GetNumberOfPasses(int kind);
+  static const char* GetPassKindName(int kind);
+
+  /**
+   * CPU milliseconds of the last frame before its first pass: updating what
+   * changed, the near-plane sections, uniforms (measured whether or not
+   * TimePasses).
+   */
+  vtkGetMacro(PreparationTime, double);
+
   /**
    * Bytes this mapper holds on the GPU (cell textures, boundary, transfer
    * function, Psi table, render targets).
@@ -436,6 +479,8 @@ protected:
   int NumberOfContinuations = 0;
   vtkTypeBool CountCellSteps = 0;
   vtkIdType NumberOfCellSteps = 0;
+  vtkTypeBool TimePasses = 0;
+  double PreparationTime = 0.0;
   float ImageSampleDistance = 1.0f;
   float MinimumImageSampleDistance = 1.0f;
   float MaximumImageSampleDistance = 10.0f;

@@ -8,12 +8,18 @@
 //
 //   ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]
 //                   [--views N] [--peer-views N] [--inside] [--check N]
+//                   [--transfer-function ramp|realistic] [--breakdown]
 //                   [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]
 //
 // --check N: after its frames, each PPIRay mapper renders the last view at
 // N x N and every pixel is compared with the CPU reference renderer (p99 and
 // max per channel, pixels covered, NaN); the exit status is 1 when p99 or
 // max exceeds 1/255 or a pixel is NaN (the bound of the test suite).
+//
+// --transfer-function realistic: 14 colour and 22 opacity nodes (RealisticFunction);
+// ramp (default): 3 colour nodes, a 2-node opacity ramp.
+// --breakdown: a third untimed orbit with the mapper's TimePasses on prints
+// the GPU milliseconds per kind of pass and frame, and the CPU preparation.
 //
 // Default scene: vtkRTAnalyticSource over [-32, 32]^3 split into 1.31 M
 // tetrahedra (vtkDataSetTriangleFilter), 512x512, 8 views. --inside: the
@@ -48,8 +54,10 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -68,6 +76,8 @@ struct Options
   std::string Mappers = "ppiray,pt,raycast";
   bool Inside = false;
   int Check = 0;
+  std::string TransferFunction = "ramp";
+  bool Breakdown = false;
 };
 
 struct Row
@@ -80,6 +90,72 @@ struct Row
   double CellStepsPerFrame = -1; // mean over the orbit (PPIRay only)
   bool CheckFailed = false;
 };
+
+// A transfer function as users set them: 14 colour nodes (a desaturated
+// rainbow, RGB space) and 22 opacity nodes (three humps rising with the
+// scalar), smooth, no spikes, over [lo, hi].
+void RealisticFunction(
+  double lo, double hi, vtkColorTransferFunction* color, vtkPiecewiseFunction* opacity)
+{
+  static const double rgb[14][3] = { { 0.28, 0.28, 0.86 }, { 0.00, 0.00, 0.36 },
+    { 0.00, 1.00, 1.00 }, { 0.00, 0.50, 0.00 }, { 1.00, 1.00, 0.00 }, { 1.00, 0.38, 0.00 },
+    { 0.42, 0.00, 0.00 }, { 0.88, 0.30, 0.30 }, { 0.60, 0.40, 0.80 }, { 0.95, 0.95, 0.95 },
+    { 0.20, 0.60, 0.40 }, { 0.75, 0.55, 0.20 }, { 0.90, 0.75, 0.55 }, { 0.50, 0.10, 0.20 } };
+  for (int i = 0; i < 14; ++i)
+  {
+    color->AddRGBPoint(lo + (hi - lo) * i / 13.0, rgb[i][0], rgb[i][1], rgb[i][2]);
+  }
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < 22; ++i)
+  {
+    const double x = i / 21.0;
+    const double hump = 0.5 - 0.5 * std::cos(6.0 * pi * x);
+    opacity->AddPoint(lo + (hi - lo) * x, 0.02 + 0.48 * x * hump * hump);
+  }
+}
+
+// The mean GPU milliseconds per kind of pass and frame over `views` frames of
+// the orbit, the passes drawn, the CPU preparation and the frame's wall time.
+void PrintBreakdown(const std::string& name, const std::string& size, vtkRenderWindow* window,
+  vtkUnstructuredGridGPURayCastMapper* mapper, const std::function<void()>& nextView, int views)
+{
+  const int kinds = vtkUnstructuredGridGPURayCastMapper::NUMBER_OF_PASS_KINDS;
+  std::vector<double> ms(kinds, 0.0), passes(kinds, 0.0);
+  double preparation = 0.0, wall = 0.0;
+  mapper->TimePassesOn();
+  vtkNew<vtkTimerLog> timer;
+  for (int v = 0; v < views; ++v)
+  {
+    nextView();
+    timer->StartTimer();
+    window->Render();
+    window->WaitForCompletion();
+    timer->StopTimer();
+    wall += 1000.0 * timer->GetElapsedTime();
+    preparation += mapper->GetPreparationTime();
+    for (int k = 0; k < kinds; ++k)
+    {
+      ms[k] += mapper->GetPassTime(k);
+      passes[k] += mapper->GetNumberOfPasses(k);
+    }
+  }
+  mapper->TimePassesOff();
+  double gpu = 0.0;
+  std::printf("\nbreakdown %s %s (mean of %d frames, GPU timer queries):\n", name.c_str(),
+    size.c_str(), views);
+  std::printf("| pass | ms/frame | passes/frame | share of frame |\n|---|---:|---:|---:|\n");
+  std::printf(
+    "| CPU preparation | %.2f | | %.1f %% |\n", preparation / views, 100.0 * preparation / wall);
+  for (int k = 0; k < kinds; ++k)
+  {
+    gpu += ms[k];
+    std::printf("| %s | %.2f | %.2f | %.1f %% |\n",
+      vtkUnstructuredGridGPURayCastMapper::GetPassKindName(k), ms[k] / views, passes[k] / views,
+      100.0 * ms[k] / wall);
+  }
+  std::printf("| all passes | %.2f | | %.1f %% |\n| frame (wall) | %.2f | | |\n", gpu / views,
+    100.0 * gpu / wall, wall / views);
+}
 
 vtkSmartPointer<vtkUnstructuredGrid> LoadScene(const Options& o)
 {
@@ -163,6 +239,12 @@ Row MeasureOrbit(const std::string& name, vtkRenderWindow* window,
     }
     ours->CountCellStepsOff();
     row.CellStepsPerFrame = steps / views;
+    if (o.Breakdown)
+    {
+      int* size = window->GetSize();
+      PrintBreakdown(name, std::to_string(size[0]) + "x" + std::to_string(size[1]), window, ours,
+        nextView, views);
+    }
     if (check)
     {
       window->SetSize(o.Check, o.Check);
@@ -188,12 +270,19 @@ std::vector<Row> Measure(const std::string& name, vtkUnstructuredGridVolumeMappe
   double range[2];
   grid->GetPointData()->GetScalars()->GetRange(range);
   vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(range[0], 0.23, 0.30, 0.75);
-  color->AddRGBPoint(0.5 * (range[0] + range[1]), 0.87, 0.87, 0.87);
-  color->AddRGBPoint(range[1], 0.71, 0.02, 0.15);
   vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(range[0], 0.0);
-  opacity->AddPoint(range[1], 0.5);
+  if (o.TransferFunction == "realistic")
+  {
+    RealisticFunction(range[0], range[1], color, opacity);
+  }
+  else
+  {
+    color->AddRGBPoint(range[0], 0.23, 0.30, 0.75);
+    color->AddRGBPoint(0.5 * (range[0] + range[1]), 0.87, 0.87, 0.87);
+    color->AddRGBPoint(range[1], 0.71, 0.02, 0.15);
+    opacity->AddPoint(range[0], 0.0);
+    opacity->AddPoint(range[1], 0.5);
+  }
   vtkNew<vtkVolumeProperty> property;
   property->SetColor(color);
   property->SetScalarOpacity(opacity);
@@ -290,11 +379,25 @@ int main(int argc, char* argv[])
     {
       o.Mappers = next();
     }
+    else if (arg == "--transfer-function")
+    {
+      o.TransferFunction = next();
+      if (o.TransferFunction != "ramp" && o.TransferFunction != "realistic")
+      {
+        std::cerr << "--transfer-function: ramp or realistic\n";
+        return 2;
+      }
+    }
+    else if (arg == "--breakdown")
+    {
+      o.Breakdown = true;
+    }
     else
     {
       std::cout
         << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]"
            " [--views N] [--peer-views N] [--inside] [--check N]"
+           " [--transfer-function ramp|realistic] [--breakdown]"
            " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]\n\n"
            "Frame time of PPIRay against VTK's unstructured volume mappers on one scene, same\n"
            "run: median ms per frame over an orbit of views after a warm-up frame.\n"
@@ -309,6 +412,9 @@ int main(int argc, char* argv[])
            "outside)\n"
            "  --check N           PPIRay's last view at NxN against the CPU reference; exit 1\n"
            "                      past 1/255 (p99 or max) or with NaN\n"
+           "  --transfer-function ramp (default: 3 colour nodes, 2-node opacity ramp) or\n"
+           "                      realistic (14 colour and 22 opacity nodes, smooth)\n"
+           "  --breakdown         GPU time per kind of pass (a third, untimed orbit)\n"
            "  --mappers LIST      comma-separated (default ppiray,pt,raycast): ppiray (partial\n"
            "                      pre-integration), ppiray-exact, ppiray-full, ppiray-average,\n"
            "                      pt (vtkProjectedTetrahedraMapper), raycast\n"
@@ -335,7 +441,8 @@ int main(int argc, char* argv[])
                                    std::to_string(o.Wavelet) + "]^3 tetrahedralized"
                                : o.File)
             << ", " << grid->GetNumberOfCells() << " cells, " << sizes
-            << (o.Inside ? ", camera inside" : "") << "\n";
+            << (o.Inside ? ", camera inside" : "") << ", transfer function " << o.TransferFunction
+            << "\n";
 
   std::vector<Row> rows;
   std::stringstream list(o.Mappers);
