@@ -1,5 +1,7 @@
 #include "vtkPPIRayCellBuffers.h"
 
+#include "ppirayConvexSurface.h"
+
 #include "vtkObject.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -157,6 +159,19 @@ void vtkPPIRayCellBuffers::SetMaximumBufferTexels(size_t texels)
     this->GeometryOnGPU = false;
     this->FieldOnGPU = false;
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkPPIRayCellBuffers::IsBoundaryConvex()
+{
+  if (this->ConvexityCheckedAt != this->GeometryUploadCount)
+  {
+    const Arrays arrays = this->GetArrays();
+    this->Convex = ppiray::IsConvexSurface(
+      arrays.BoundaryPoints, arrays.BoundaryTriangles, 1e-6 * this->GetBoundingRadius());
+    this->ConvexityCheckedAt = this->GeometryUploadCount;
+  }
+  return this->Convex;
 }
 
 //------------------------------------------------------------------------------

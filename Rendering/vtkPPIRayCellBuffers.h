@@ -142,6 +142,14 @@ public:
   size_t GetNumberOfBoundaryIndices() const { return this->GetArrays().BoundaryTriangles.size(); }
   ///@}
 
+  /**
+   * Whether the boundary bounds a convex solid (ppiray::IsConvexSurface,
+   * corners within 1e-6 of the bounding radius of a plane count as on it):
+   * every ray then enters the mesh once and one entry layer is all a frame
+   * needs. Checked once per geometry upload.
+   */
+  bool IsBoundaryConvex();
+
   size_t GetGPUBytes() const;
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -184,6 +192,8 @@ private:
   size_t BoundaryBytes = 0;
   size_t MaximumBufferTexels = 0;
   int GeometryUploadCount = 0;
+  int ConvexityCheckedAt = -1; // the GeometryUploadCount IsBoundaryConvex() was checked at
+  bool Convex = false;
   int FieldUploadCount = 0;
 };
 

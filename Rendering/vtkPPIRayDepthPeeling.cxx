@@ -314,6 +314,11 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
   bool entered = false;
   for (int layer = 0; peel < frame.MaximumPeels; ++peel, ++layer)
   {
+    if (frame.ConvexBoundary && layer == 1)
+    {
+      entered = false; // every ray met its one entry face in the first layer
+      break;
+    }
     entered = this->Enter(context, frame, cells, layer == 0);
     if (!entered)
     {

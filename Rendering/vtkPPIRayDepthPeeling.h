@@ -63,6 +63,8 @@ public:
     bool CountCellSteps = false;
     // Time every pass with GL timer queries (waits for the GPU at the end).
     bool TimePasses = false;
+    // The boundary bounds a convex solid: one entry layer, no peel after it.
+    bool ConvexBoundary = false;
   };
   /** Binds the march program's inputs other than the peeling's own. */
   using MarchInputs = std::function<void(vtkShaderProgram*, std::vector<vtkTextureObject*>&)>;

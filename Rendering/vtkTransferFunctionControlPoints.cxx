@@ -292,14 +292,35 @@ bool vtkTransferFunctionControlPoints::Build(vtkVolumeProperty* property, int co
 //------------------------------------------------------------------------------
 std::vector<float> vtkTransferFunctionControlPoints::GetTexels(double shift) const
 {
-  std::vector<float> texels(8 * this->Values.size(), 0.0f);
-  for (size_t i = 0; i < this->Values.size(); ++i)
+  // Interval k = -1 .. n - 1 at texels 3 (k + 1) .. 3 (k + 1) + 2:
+  //   (r, g, b, tau) at s_k,  d(r, g, b, tau) / ds,  (s_k, s_k+1, 0, 0),
+  // so that on [s_k, s_k+1]  f(s) = f(s_k) + f'(s) (s - s_k). The slope is
+  // taken over the ends as the shader has them (rounded to float), so f
+  // reaches f(s_k+1) at the rounded s_k+1; zero where they round to one value.
+  const size_t n = this->Values.size();
+  std::vector<float> texels(12 * (n + 1), 0.0f);
+  if (n == 0)
   {
-    texels[8 * i + 0] = static_cast<float>(this->Values[i] - shift);
-    texels[8 * i + 1] = static_cast<float>(this->ColorAttenuation[4 * i + 3]);
-    texels[8 * i + 4] = static_cast<float>(this->ColorAttenuation[4 * i + 0]);
-    texels[8 * i + 5] = static_cast<float>(this->ColorAttenuation[4 * i + 1]);
-    texels[8 * i + 6] = static_cast<float>(this->ColorAttenuation[4 * i + 2]);
+    return texels;
+  }
+  const float infinity = 3.0e38f; // INFINITY of march_common_fs.glsl
+  for (size_t interval = 0; interval <= n; ++interval)
+  {
+    const size_t lo = interval == 0 ? 0 : interval - 1; // k = interval - 1, clamped
+    const size_t hi = interval == n ? n - 1 : interval;
+    const float sLo = interval == 0 ? -infinity : static_cast<float>(this->Values[lo] - shift);
+    const float sHi = interval == n ? infinity : static_cast<float>(this->Values[hi] - shift);
+    const double width = interval == 0 || interval == n ? 0.0 : double(sHi) - double(sLo);
+    float* t = &texels[12 * interval];
+    for (int c = 0; c < 4; ++c)
+    {
+      const double a = this->ColorAttenuation[4 * lo + c];
+      const double b = this->ColorAttenuation[4 * hi + c];
+      t[c] = static_cast<float>(a);
+      t[4 + c] = width > 0.0 ? static_cast<float>((b - a) / width) : 0.0f;
+    }
+    t[8] = sLo;
+    t[9] = sHi;
   }
   return texels;
 }

@@ -84,9 +84,12 @@ public:
   bool GetTruncated() const { return this->Truncated; }
 
   /**
-   * Two RGBA32F texels per control point, (s - shift, tau, 0, 0) then
-   * (r, g, b, 0): the layout the march shader reads, with the scalar stored
-   * relative to `shift` as the field is.
+   * The layout the march shader reads (transfer_function_fs.glsl): three
+   * RGBA32F texels per control interval k = -1 .. n - 1 (below the first
+   * point, between points, from the last point on): (r, g, b, tau) at its
+   * low end, their derivative in s, and (s_k - shift, s_k+1 - shift, 0, 0)
+   * with -+3e38 past the first and last point; the scalar stored relative to
+   * `shift` as the field is. Constant outside the points and across a jump.
    */
   std::vector<float> GetTexels(double shift = 0.0) const;
 

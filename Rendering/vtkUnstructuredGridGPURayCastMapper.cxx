@@ -698,6 +698,7 @@ void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolum
   frame.ClippingPlanes = &in.ClippingPlanes;
   frame.CountCellSteps = this->CountCellSteps;
   frame.TimePasses = this->TimePasses;
+  frame.ConvexBoundary = in.Cells->IsBoundaryConvex();
   const double cells = static_cast<double>(in.Cells->GetNumberOfCells());
   const int maximumSteps =
     this->MaximumNumberOfSteps > 0

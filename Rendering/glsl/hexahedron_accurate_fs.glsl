@@ -66,7 +66,7 @@ int integrateMonotonicPiece(vec4 w, float xA, float x1, float sA, float s1, int 
     k = nextK;
     xA = xB;
     sA = sB;
-    tfA = transferFunction(sA, k);
+    tfA = transferFunctionEntered(k, ds, tfB);
   }
   return k;
 }

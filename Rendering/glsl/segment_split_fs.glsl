@@ -31,7 +31,7 @@ int integrateSegment(float sFront, float sBack, float len, int k, inout vec4 col
     }
     k = nextK;
     sA = sB;
-    tfA = transferFunction(sA, k);
+    tfA = transferFunctionEntered(k, ds, tfB);
   }
   return k;
 }

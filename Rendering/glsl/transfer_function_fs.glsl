@@ -1,27 +1,39 @@
-// Transfer function lookup shared by the integration modes: control points
-// (vtkTransferFunctionControlPoints), 2 texels each: (s, tau), (r, g, b).
+// Transfer function lookup shared by the integration modes: piecewise linear
+// between control points s_0 <= ... <= s_n-1, constant outside. Three texels
+// per control interval k = -1 .. n - 1 (vtkTransferFunctionControlPoints::
+// GetTexels): f(s_k) = (r, g, b, tau), its slope f' in s, and the ends
+// (s_k, s_k+1) (-+INFINITY past the first and last point), so that
+//   f(s) = f(s_k) + f' (s - s_k),  s in [s_k, s_k+1].
 uniform samplerBuffer controlPoints;
 uniform int numberOfControlPoints;
 
-// Transfer function: piecewise linear between control points, constant outside.
-float controlPointValue(int i)
+vec4 intervalTexel(int k, int i)
 {
-  return texelFetch(controlPoints, 2 * i).x;
+  return texelFetch(controlPoints, 3 * (k + 1) + i);
+}
+
+// (s_k, s_k+1) of interval k.
+vec2 intervalEnds(int k)
+{
+  return intervalTexel(k, 2).xy;
 }
 
 // (r, g, b, tau) of the transfer function at scalar s, with s in the control
-// interval [s_k, s_k+1] (k = -1 or n - 1: clamped to the end points).
+// interval k (clamped to its ends).
 vec4 transferFunction(float s, int k)
 {
-  int n = numberOfControlPoints;
-  int lo = clamp(k, 0, n - 1);
-  int hi = clamp(k + 1, 0, n - 1);
-  vec4 a = texelFetch(controlPoints, 2 * lo);
-  vec4 b = texelFetch(controlPoints, 2 * hi);
-  vec4 ca = vec4(texelFetch(controlPoints, 2 * lo + 1).rgb, a.y);
-  vec4 cb = vec4(texelFetch(controlPoints, 2 * hi + 1).rgb, b.y);
-  float w = (hi == lo || b.x <= a.x) ? 0.0 : clamp((s - a.x) / (b.x - a.x), 0.0, 1.0);
-  return mix(ca, cb, w);
+  vec2 ends = intervalEnds(k);
+  return intervalTexel(k, 0) + intervalTexel(k, 1) * (clamp(s, ends.x, ends.y) - ends.x);
+}
+
+// The transfer function where a walk that crossed a control point enters
+// interval k: upwards, its low end f(s_k) (past a jump, the right limit);
+// downwards, `left`, its value where the walk left the interval above (equal
+// but across a jump below, which the walk crosses next as a piece of zero
+// length).
+vec4 transferFunctionEntered(int k, float ds, vec4 left)
+{
+  return ds > 0.0 ? intervalTexel(k, 0) : left;
 }
 
 // Index k with s_k <= s < s_k+1 (-1 below the first point), moved from the
@@ -33,12 +45,12 @@ int controlInterval(float s, int k)
   int n = numberOfControlPoints;
   k = clamp(k, -1, n - 1);
   int i = 0;
-  for (; i < n && k + 1 < n && controlPointValue(k + 1) <= s; ++i)
+  for (; i < n && k + 1 < n && intervalEnds(k).y <= s; ++i)
   {
     ++k;
   }
   int j = 0;
-  for (; j < n && k >= 0 && controlPointValue(k) > s; ++j)
+  for (; j < n && k >= 0 && intervalEnds(k).x > s; ++j)
   {
     --k;
   }
@@ -54,14 +66,15 @@ int controlInterval(float s, int k)
 int nextControlCrossing(float ds, float sEnd, int k, out float sB)
 {
   int n = numberOfControlPoints;
-  if (ds > 0.0 && k + 1 < n && controlPointValue(k + 1) < sEnd)
+  vec2 ends = intervalEnds(k);
+  if (ds > 0.0 && k + 1 < n && ends.y < sEnd)
   {
-    sB = controlPointValue(k + 1);
+    sB = ends.y;
     return k + 1;
   }
-  if (ds < 0.0 && k >= 0 && controlPointValue(k) > sEnd)
+  if (ds < 0.0 && k >= 0 && ends.x > sEnd)
   {
-    sB = controlPointValue(k);
+    sB = ends.x;
     return k - 1;
   }
   sB = sEnd;
