@@ -11,7 +11,7 @@
 # A mesh is a .vtu file, or wavelet:N (ppirayBenchmark's generated wavelet of
 # half extent N). Options by environment: ROUNDS (default 4), SIZE (512x512),
 # VIEWS (8), MAPPERS (ppiray; a comma-separated list of ppirayBenchmark's
-# mapper names, each timed on its own), ARGS (more ppirayBenchmark options,
+# mapper names, each timed on its own), BENCH_ARGS (more ppirayBenchmark options,
 # e.g. "--transfer-function realistic"; both builds must know them).
 set -euo pipefail
 a=$1
@@ -29,7 +29,7 @@ for round in $(seq 1 "${ROUNDS:-4}"); do
       declare -A ms
       for build in "$a" "$b"; do
         line=$(LD_LIBRARY_PATH="$build/lib" "$build/bin/ppirayBenchmark" "${source[@]}" \
-          --size "${SIZE:-512x512}" --views "${VIEWS:-8}" --mappers "$mapper" ${ARGS:-} 2>/dev/null | tail -1)
+          --size "${SIZE:-512x512}" --views "${VIEWS:-8}" --mappers "$mapper" ${BENCH_ARGS:-} 2>/dev/null | tail -1)
         ms[$build]=$(echo "$line" | awk -F'|' '{gsub(/ /, "", $3); print $3}')
       done
       echo "round $round $(basename "$mesh") $mapper: A ${ms[$a]} ms, B ${ms[$b]} ms, B/A" \
