@@ -114,6 +114,17 @@ void RealisticFunction(
   }
 }
 
+// Milliseconds of one frame, ended with WaitForCompletion.
+double FrameMilliseconds(vtkRenderWindow* window)
+{
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  window->Render();
+  window->WaitForCompletion();
+  timer->StopTimer();
+  return 1000.0 * timer->GetElapsedTime();
+}
+
 // The mean GPU milliseconds per kind of pass and frame over `views` frames of
 // the orbit, the passes drawn, the CPU preparation and the frame's wall time.
 void PrintBreakdown(const std::string& name, const std::string& size, vtkRenderWindow* window,
@@ -123,15 +134,10 @@ void PrintBreakdown(const std::string& name, const std::string& size, vtkRenderW
   std::vector<double> ms(kinds, 0.0), passes(kinds, 0.0);
   double preparation = 0.0, wall = 0.0;
   mapper->TimePassesOn();
-  vtkNew<vtkTimerLog> timer;
   for (int v = 0; v < views; ++v)
   {
     nextView();
-    timer->StartTimer();
-    window->Render();
-    window->WaitForCompletion();
-    timer->StopTimer();
-    wall += 1000.0 * timer->GetElapsedTime();
+    wall += FrameMilliseconds(window);
     preparation += mapper->GetPreparationTime();
     for (int k = 0; k < kinds; ++k)
     {
@@ -209,15 +215,10 @@ Row MeasureOrbit(const std::string& name, vtkRenderWindow* window,
   // The next view of the orbit: turning about the centre, or about itself.
   auto nextView = [&]() { o.Inside ? camera->Yaw(360.0 / views) : camera->Azimuth(360.0 / views); };
   std::vector<double> times;
-  vtkNew<vtkTimerLog> timer;
   for (int v = 0; v < views; ++v)
   {
     nextView();
-    timer->StartTimer();
-    window->Render();
-    window->WaitForCompletion();
-    timer->StopTimer();
-    times.push_back(1000.0 * timer->GetElapsedTime());
+    times.push_back(FrameMilliseconds(window));
   }
   std::sort(times.begin(), times.end());
   Row row;
