@@ -9,7 +9,11 @@
 // Which side of the surfaces a ray is on is carried along it as an index j =
 // the number of isovalues <= s (like the control interval k): a surface is
 // crossed exactly when j changes, also where the scalar jumps between cells
-// (cell data), so a surface through a shared face is counted once.
+// (cell data), so a surface through a shared face is counted once. Where the
+// ray crosses a stretch without a field (a hidden cell, a NaN scalar, an
+// imaginary cell of a convexified grid) j is forgotten: the field resumes
+// behind it as if the ray entered the mesh there, with no surface at the
+// resumption (isoIntervalAfterEmpty).
 //PPIRay::IsoSurface::Dec
 
 uniform int numberOfIsoValues;
@@ -27,6 +31,13 @@ uniform vec3 lightDiffuse[MAXIMUM_LIGHTS];  // colour times intensity
 uniform vec3 lightSpecular[MAXIMUM_LIGHTS];
 uniform mat4 localToWorld;
 uniform mat3 normalToWorld; // inverse transpose of localToWorld's linear part
+
+// j after a stretch of length len, ending at t, through a cell with no field:
+// unset (-1) unless the stretch is empty to float precision (a flat cell).
+int isoIntervalAfterEmpty(int j, float len, float t)
+{
+  return len > 1.0e-5 * abs(t) ? -1 : j;
+}
 
 // The isovalue interval of s (number of isovalues <= s), walked from j.
 int isoInterval(float s, int j)

@@ -271,6 +271,10 @@ void main()
             break;
           }
         }
+        else if (g.w <= EMPTY_CELL)
+        {
+          j = isoIntervalAfterEmpty(j, tEnd - tFrom, tEnd);
+        }
         reached = max(reached, tEnd);
         if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
         {

@@ -380,6 +380,10 @@ void main()
           }
         }
       }
+      else if (c0.x <= EMPTY_CELL)
+      {
+        j = isoIntervalAfterEmpty(j, tEnd - tFrom, tEnd);
+      }
       if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
       {
         break;

@@ -19,6 +19,11 @@
 //  5. Bad input: ISOSURFACE_BLEND without isovalues draws nothing (warning,
 //     once); 20 isovalues draw the lowest 16 (warning); an unsupported blend
 //     mode renders composite (warning).
+//  6. A slab of cells without a field across the view (marked HIDDENCELL in
+//     tetrahedra and native hexahedra; NaN cell scalars): the field resumes
+//     behind it as where a ray enters the mesh, so no surface is drawn on the
+//     slab's far side where the value there lies across an isovalue from the
+//     value before the slab (the reference leaves these cells out).
 // The baseline is a 2x2 window: tetrahedra, native hexahedra, subdivided
 // hexahedra (surfaces only), native hexahedra embedded in the volume.
 
@@ -31,6 +36,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkContourValues.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
@@ -40,6 +46,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 #include "vtkTransformFilter.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 #include "vtkUnstructuredGridReferenceRenderer.h"
 
@@ -225,6 +232,41 @@ double Roughness(const std::vector<unsigned char>& rgb, int w, int h)
   return count ? sum / count : 0.0;
 }
 
+// `grid` with the cells whose centre lies in -0.5 < y < 0 (a slab across
+// the view) marked HIDDENCELL or, with `nanArray`, given a NaN value in that
+// cell array.
+vtkSmartPointer<vtkUnstructuredGrid> WithEmptySlab(
+  vtkUnstructuredGrid* grid, const char* nanArray = nullptr)
+{
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->DeepCopy(grid);
+  vtkUnsignedCharArray* ghosts = nanArray ? nullptr : out->AllocateCellGhostArray();
+  vtkDataArray* values = nanArray ? out->GetCellData()->GetArray(nanArray) : nullptr;
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    double y = 0;
+    vtkIdType npts;
+    const vtkIdType* pts;
+    out->GetCellPoints(c, npts, pts);
+    for (vtkIdType v = 0; v < npts; ++v)
+    {
+      y += out->GetPoint(pts[v])[1] / npts;
+    }
+    if (y > -0.5 && y < 0.0)
+    {
+      if (ghosts)
+      {
+        ghosts->SetValue(c, vtkDataSetAttributes::HIDDENCELL);
+      }
+      else
+      {
+        values->SetComponent(c, 0, std::nan(""));
+      }
+    }
+  }
+  return out;
+}
+
 void Report(const char* what, const ppiray_test::ReferenceError& e)
 {
   std::cout << what << ": p99 " << e.P99 << " max " << e.Max << " mean " << e.Mean
@@ -297,8 +339,9 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
   }
 
   // 4. Cell scalars: the value of each cell at its centre.
+  auto cellScalars = vtkSmartPointer<vtkUnstructuredGrid>::New();
   {
-    auto cells = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    vtkUnstructuredGrid* cells = cellScalars;
     cells->DeepCopy(tets);
     vtkNew<vtkDoubleArray> r;
     r->SetName("cellR");
@@ -324,6 +367,31 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
     if (cellIso.Error.P99 > 1.0)
     {
       errors += Fail("cell-scalar isosurfaces off the reference");
+    }
+  }
+
+  // 6. A slab without a field. Bound as in 1.-3.; with the isovalue
+  // interval carried across the slab, surfaces appear on its far side
+  // (Documentation/hardening.md gives the error then).
+  {
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> hiddenTets, hiddenHexes, nanCells;
+    for (vtkUnstructuredGridGPURayCastMapper* m :
+      { hiddenTets.Get(), hiddenHexes.Get(), nanCells.Get() })
+    {
+      m->SetBlendModeToIsoSurface();
+    }
+    const Result slabs[3] = { RenderAndCompare(hiddenTets, WithEmptySlab(tets), false),
+      RenderAndCompare(hiddenHexes, WithEmptySlab(hexes), false),
+      RenderAndCompare(nanCells, WithEmptySlab(cellScalars, "cellR"), false, "cellR") };
+    const char* names[3] = { "tetrahedra, hidden slab, surfaces",
+      "hexahedra natively, hidden slab, surfaces", "tetrahedra, NaN cell-scalar slab, surfaces" };
+    for (int i = 0; i < 3; ++i)
+    {
+      Report(names[i], slabs[i].Error);
+      if (slabs[i].Error.P99 > 1.0 || slabs[i].Error.Mean > 0.3)
+      {
+        errors += Fail(std::string(names[i]) + ": off the reference");
+      }
     }
   }
 
