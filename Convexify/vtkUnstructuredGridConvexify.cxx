@@ -1,5 +1,7 @@
 #include "vtkUnstructuredGridConvexify.h"
 
+#include "ppirayBoundaryFaceLinks.h"
+
 #include "ppirayConformingTetrahedra.h"
 #include "ppirayImaginaryTetrahedra.h"
 #include "ppirayValidPointIds.h"
@@ -120,6 +122,12 @@ bool AllFinite(vtkPoints* points)
   }
   return true;
 }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkUnstructuredGridConvexify::BoundaryCellArrayName()
+{
+  return ppiray::BoundaryCellArrayName;
 }
 
 //------------------------------------------------------------------------------

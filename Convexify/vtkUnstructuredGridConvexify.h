@@ -67,7 +67,7 @@ public:
   ///@}
 
   /// Name of the 4-component cell array of input cells across imaginary faces.
-  static const char* BoundaryCellArrayName() { return "ppirayBoundaryCell"; }
+  static const char* BoundaryCellArrayName();
 
 protected:
   vtkUnstructuredGridConvexify() = default;

@@ -1,9 +1,11 @@
 #include "vtkTetrahedralCellTextures.h"
 
+#include "ppirayBoundaryFaceLinks.h"
 #include "ppirayConformingTetrahedra.h"
 #include "ppirayHiddenCells.h"
 #include "ppirayMeshLocalFrame.h"
 
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -68,6 +70,8 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->NumberOfInvertedTetrahedra = 0;
   this->NumberOfNonManifoldFaces = 0;
   this->NumberOfFoldedFaces = 0;
+  this->NumberOfLinkedFaces = this->NumberOfSplitFaces = this->NumberOfUnlinkedFaces = 0;
+  this->MaximumPiecesPerFace = 0;
   const vtkIdType numberOfTets = this->GetNumberOfTetrahedra();
   if (numberOfTets == 0 || !grid->GetPoints())
   {
@@ -153,6 +157,8 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     this->Neighbors[k] = n < 0 ? NoNeighbor() : NeighborCode(n, neighborFaces[k], folded, inPlace);
   }
 
+  const std::vector<unsigned char> linked = this->LinkBoundaryFaces(grid, neighbors);
+
   // Boundary triangles wound outward, over a compact set of points.
   const std::vector<vtkIdType>& boundary = adjacency->GetBoundaryFaces();
   std::vector<vtkIdType> pointMap(numberOfPoints, -1);
@@ -160,6 +166,10 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   {
     const vtkIdType t = boundary[k];
     const int f = static_cast<int>(boundary[k + 1]);
+    if (linked[4 * t + f])
+    {
+      continue; // crossed into the imaginary cells on it
+    }
     int corner[3] = { vtkUnstructuredGridCellAdjacency::FaceVertex(f, 0),
       vtkUnstructuredGridCellAdjacency::FaceVertex(f, 1),
       vtkUnstructuredGridCellAdjacency::FaceVertex(f, 2) };
@@ -185,6 +195,62 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   }
   this->Modified();
   return true;
+}
+
+//------------------------------------------------------------------------------
+std::vector<unsigned char> vtkTetrahedralCellTextures::LinkBoundaryFaces(
+  vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& neighbors)
+{
+  this->NumberOfLinkedFaces = this->NumberOfSplitFaces = this->NumberOfUnlinkedFaces = 0;
+  this->MaximumPiecesPerFace = 0;
+  std::vector<unsigned char> linked(neighbors.size(), 0);
+  if (!grid->GetCellData()->GetArray(ppiray::BoundaryCellArrayName))
+  {
+    return linked;
+  }
+  std::vector<unsigned char> open(neighbors.size());
+  for (size_t k = 0; k < neighbors.size(); ++k)
+  {
+    open[k] = neighbors[k] < 0 ? 1 : 0;
+  }
+  const ppiray::BoundaryFaceLinks links = ppiray::LinkBoundaryFaces(
+    grid, this->Tets, this->CellIds, this->LocalPoints.data(), open, this->Degenerate);
+  this->NumberOfUnlinkedFaces = links.UncoveredFaces + links.UnmatchedPieces;
+  auto code = [](vtkIdType key)
+  { return NeighborCode(key / 4, static_cast<int>(key % 4), false, false); };
+  for (size_t i = 0; i < links.Faces.size(); ++i)
+  {
+    const vtkIdType face = links.Faces[i];
+    const vtkIdType first = links.Offsets[i], n = links.Offsets[i + 1] - first;
+    if (n > MaximumPieces())
+    {
+      ++this->NumberOfUnlinkedFaces;
+      continue;
+    }
+    for (vtkIdType p = first; p < first + n; ++p)
+    {
+      this->Neighbors[links.Pieces[p]] = code(face);
+      linked[links.Pieces[p]] = 1;
+    }
+    linked[face] = 1;
+    ++this->NumberOfLinkedFaces;
+    if (n == 1)
+    {
+      this->Neighbors[face] = code(links.Pieces[first]);
+      continue;
+    }
+    // The list: (n, codes), padded to whole texels.
+    this->Neighbors[face] = SplitFace() + static_cast<int>(this->Neighbors.size() / 4);
+    this->Neighbors.push_back(static_cast<int>(n));
+    for (vtkIdType p = first; p < first + n; ++p)
+    {
+      this->Neighbors.push_back(code(links.Pieces[p]));
+    }
+    this->Neighbors.resize(4 * ((this->Neighbors.size() + 3) / 4), NoNeighbor());
+    ++this->NumberOfSplitFaces;
+    this->MaximumPiecesPerFace = std::max(this->MaximumPiecesPerFace, static_cast<int>(n));
+  }
+  return linked;
 }
 
 //------------------------------------------------------------------------------
@@ -298,4 +364,8 @@ void vtkTetrahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfUnsupportedCells: " << this->NumberOfUnsupportedCells << "\n";
   os << indent << "NumberOfSplitCells: " << this->NumberOfSplitCells << "\n";
   os << indent << "NumberOfQuadraticCells: " << this->NumberOfQuadraticCells << "\n";
+  os << indent << "NumberOfLinkedFaces: " << this->NumberOfLinkedFaces << "\n";
+  os << indent << "NumberOfSplitFaces: " << this->NumberOfSplitFaces << "\n";
+  os << indent << "MaximumPiecesPerFace: " << this->MaximumPiecesPerFace << "\n";
+  os << indent << "NumberOfUnlinkedFaces: " << this->NumberOfUnlinkedFaces << "\n";
 }

@@ -16,6 +16,10 @@
  *   out through the face that contains the point where it came in.
  *   Neighbours are paired by side where more than two tetrahedra share a
  *   face, and folded faces are marked (vtkUnstructuredGridCellAdjacency).
+ *   In a convexified grid the mesh's boundary faces are joined to the
+ *   imaginary faces on them that point ids do not join (a face split by
+ *   Steiner points, a seam; ppirayBoundaryFaceLinks.h): a split face's
+ *   neighbour code names the list of its pieces.
  *   Also gives the boundary triangles, wound outward, with their points.
  * - BuildField(): when the scalars change. Point scalars give the linear
  *   interpolant's gradient; cell scalars a constant. A tetrahedron touching a
@@ -73,10 +77,15 @@ public:
    * (both tetrahedra on the same side of it), -(code + 2) if the ray walks
    * back through the neighbour (it is inverted), -(code + 2 + TurnBack())
    * if it walks back through the cell it is in (that one is inverted, the
-   * neighbour not); NoNeighbor() on the boundary.
+   * neighbour not); NoNeighbor() on the boundary; SplitFace() + i for a
+   * boundary face split into pieces (convexification), whose list starts
+   * at texel i of GetNeighbors(): (n, code_1, code_2, ...), the codes of the
+   * n imaginary faces on it, in texels of 4 (at most MaximumPieces()).
    */
   static constexpr int NoNeighbor() { return -1; }
   static constexpr int TurnBack() { return 1 << 29; }
+  static constexpr int SplitFace() { return 1 << 30; }
+  static constexpr int MaximumPieces() { return 64; }
   static int NeighborCode(vtkIdType tet, int face, bool folded, bool turnBack)
   {
     const int code = static_cast<int>(4 * tet + face);
@@ -104,7 +113,10 @@ public:
    * tetrahedron's corners (x_v, FlatCellMarker()) for v = 0..3.
    */
   const std::vector<float>& GetFacePlanes() const { return this->FacePlanes; }
-  /** 4 ints per tetrahedron: the neighbour code through face f (NeighborCode()). */
+  /**
+   * 4 ints per tetrahedron: the neighbour code through face f (NeighborCode());
+   * then the lists of split faces' pieces.
+   */
   const std::vector<int>& GetNeighbors() const { return this->Neighbors; }
   /** 4 floats per tetrahedron: (g, s0) with s(x) = g . x + s0. */
   const std::vector<float>& GetField() const { return this->Field; }
@@ -123,6 +135,18 @@ public:
   /** Tetrahedra of cells marked HIDDENCELL (traversed, rendered empty). */
   vtkGetMacro(NumberOfHiddenTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfUnsupportedCells, vtkIdType);
+  ///@{
+  /**
+   * Convexified grids: boundary faces joined to imaginary faces that point
+   * ids do not join (linked), those of them split into several pieces, the
+   * most pieces on one face, and faces left open (pieces that do not cover
+   * them, or more than MaximumPieces(); imaginary faces on no open face).
+   */
+  vtkGetMacro(NumberOfLinkedFaces, vtkIdType);
+  vtkGetMacro(NumberOfSplitFaces, vtkIdType);
+  vtkGetMacro(MaximumPiecesPerFace, int);
+  vtkGetMacro(NumberOfUnlinkedFaces, vtkIdType);
+  ///@}
   /** Hexahedra, voxels, wedges and pyramids split into tetrahedra. */
   vtkGetMacro(NumberOfSplitCells, vtkIdType);
   /** Quadratic (or higher-order) cells, split through their linear corners. */
@@ -148,6 +172,12 @@ public:
 protected:
   vtkTetrahedralCellTextures() = default;
   ~vtkTetrahedralCellTextures() override = default;
+
+  // Joins open faces to the imaginary faces on them (convexified grids):
+  // neighbour codes both ways, lists of pieces appended to Neighbors;
+  // returns which faces (4 t + f) are no longer boundary.
+  std::vector<unsigned char> LinkBoundaryFaces(
+    vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& neighbors);
 
   // Whether the triangle of flat tetrahedron t's corners (local indices,
   // counter-clockwise) faces the first non-flat cell reached from t through
@@ -178,6 +208,10 @@ protected:
   vtkIdType NumberOfNaNScalars = 0;
   vtkIdType NumberOfHiddenTetrahedra = 0;
   vtkIdType NumberOfUnsupportedCells = 0;
+  vtkIdType NumberOfLinkedFaces = 0;
+  vtkIdType NumberOfSplitFaces = 0;
+  int MaximumPiecesPerFace = 0;
+  vtkIdType NumberOfUnlinkedFaces = 0;
   vtkIdType NumberOfSplitCells = 0;
   vtkIdType NumberOfQuadraticCells = 0;
 

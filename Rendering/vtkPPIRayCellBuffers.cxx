@@ -35,6 +35,13 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
        // Markers are compared against half their value: no real value comes near.
        << "const float FLAT_CELL = " << 0.5 * layout.FlatCellMarker << ";\n"
        << "const float EMPTY_CELL = " << 0.5 * layout.EmptyCellOffset << ";\n";
+  // Split boundary faces (convexified grids): the pieces searched per step
+  // are taken from the loop budget after the fact (march_common_fs.glsl).
+  const int pieces = this->GetFeatures().MaximumSplitPieces;
+  glsl << "const int SPLIT_FACE = " << layout.SplitFace << ";\n"
+       << "const bool SPLIT_FACES = " << (pieces > 0 ? "true" : "false") << ";\n"
+       << "const int MAXIMUM_SPLIT_PIECES = " << pieces << ";\n"
+       << "const int SPLIT_LOOPS = " << 5 * pieces << ";\n";
   glsl << this->Geometry.TexelFunction(layout.GeometryName, "samplerBuffer", "vec4")
        << this->Neighbors.TexelFunction(layout.NeighborName, "isamplerBuffer", "ivec4")
        << this->Field.TexelFunction(layout.FieldName, "samplerBuffer", "vec4");
@@ -103,7 +110,7 @@ bool vtkPPIRayCellBuffers::Upload(vtkOpenGLRenderWindow* context, vtkObject* rep
       return failed("the cell geometry", this->Geometry);
     }
     if (!this->Neighbors.Upload(
-          context, arrays.Neighbors.data(), layout.NeighborTexels * cells, 4, VTK_INT, part))
+          context, arrays.Neighbors.data(), arrays.Neighbors.size() / 4, 4, VTK_INT, part))
     {
       return failed("the neighbours", this->Neighbors);
     }

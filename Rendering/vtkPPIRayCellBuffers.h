@@ -57,6 +57,7 @@ public:
     int TurnBack;          // added to a folded face's code where the cell it is in is inverted
     float FlatCellMarker;  // w of a flat cell's geometry texels (0: none stored)
     float EmptyCellOffset; // first field value of a cell that renders empty
+    int SplitFace = 0;     // neighbour codes from here on name a split face's list (0: none)
   };
   virtual Layout GetLayout() const = 0;
 
@@ -71,8 +72,9 @@ public:
   /** What the mesh needs of the march beyond clean cells (compiled in only then). */
   struct Features
   {
-    bool FlatCells = false; // zero-volume cells crossed with zero length
-    bool Folds = false;     // folded faces walked back
+    bool FlatCells = false;     // zero-volume cells crossed with zero length
+    bool Folds = false;         // folded faces walked back
+    int MaximumSplitPieces = 0; // most pieces of a boundary face split by convexification
   };
   virtual Features GetFeatures() const = 0;
 

@@ -32,7 +32,7 @@ vtkPPIRayCellBuffers::Layout vtkPPIRayTetrahedralCellBuffers::GetLayout() const
   using Cells = vtkTetrahedralCellTextures;
   return { "facePlanes", Cells::FacePlaneTexels(), "neighbors", Cells::NeighborTexels(), "field",
     Cells::FieldTexels(), 4, Cells::TurnBack(), Cells::FlatCellMarker(),
-    Cells::TransparentCellOffset() };
+    Cells::TransparentCellOffset(), Cells::SplitFace() };
 }
 
 //------------------------------------------------------------------------------
@@ -41,6 +41,7 @@ vtkPPIRayCellBuffers::Features vtkPPIRayTetrahedralCellBuffers::GetFeatures() co
   Features features;
   features.FlatCells = this->Cells->GetNumberOfDegenerateTetrahedra() > 0;
   features.Folds = this->Cells->GetNumberOfFoldedFaces() > 0;
+  features.MaximumSplitPieces = this->Cells->GetMaximumPiecesPerFace();
   return features;
 }
 
@@ -105,6 +106,15 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayTetrahedralCellBuffers::BuildGeometry
          "by side.");
   }
   this->ReportFoldedFaces(cells.GetNumberOfFoldedFaces(), reporter);
+  if (cells.GetNumberOfUnlinkedFaces() > 0)
+  {
+    vtkWarningWithObjectMacro(reporter,
+      << cells.GetNumberOfUnlinkedFaces()
+      << " boundary faces of the convexified mesh could not be joined to the imaginary cells on "
+         "them (not covered, or split into more than "
+      << vtkTetrahedralCellTextures::MaximumPieces()
+      << " pieces): rays leave the mesh there and re-enter by depth peeling.");
+  }
   return BuildResult::Built;
 }
 

@@ -34,6 +34,9 @@ public:
     return this->Cells->GetNumberOfTetrahedra() - this->Cells->GetNumberOfDegenerateTetrahedra();
   }
 
+  /** The cell textures behind the buffers (counts of what was built). */
+  vtkTetrahedralCellTextures* GetTextures() { return this->Cells; }
+
 protected:
   Arrays GetArrays() const override
   {

@@ -343,6 +343,27 @@ vtkIdType vtkUnstructuredGridGPURayCastMapper::GetNumberOfTetrahedra()
 }
 
 //------------------------------------------------------------------------------
+vtkIdType vtkUnstructuredGridGPURayCastMapper::GetNumberOfLinkedBoundaryFaces()
+{
+  vtkInternals& in = *this->Internals;
+  return in.Cells == &in.Tetrahedra ? in.Tetrahedra.GetTextures()->GetNumberOfLinkedFaces() : 0;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkUnstructuredGridGPURayCastMapper::GetNumberOfSplitBoundaryFaces()
+{
+  vtkInternals& in = *this->Internals;
+  return in.Cells == &in.Tetrahedra ? in.Tetrahedra.GetTextures()->GetNumberOfSplitFaces() : 0;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkUnstructuredGridGPURayCastMapper::GetNumberOfUnlinkedBoundaryFaces()
+{
+  vtkInternals& in = *this->Internals;
+  return in.Cells == &in.Tetrahedra ? in.Tetrahedra.GetTextures()->GetNumberOfUnlinkedFaces() : 0;
+}
+
+//------------------------------------------------------------------------------
 double vtkUnstructuredGridGPURayCastMapper::GetPreIntegrationTableBuildTime()
 {
   vtkInternals& in = *this->Internals;

@@ -454,6 +454,19 @@ public:
    */
   vtkIdType GetNumberOfTetrahedra();
 
+  ///@{
+  /**
+   * A convexified grid (cell array "ppirayBoundaryCell"): the mesh's boundary
+   * faces joined to the imaginary faces on them where point ids do not join
+   * them (split by Steiner points, or across a seam) — rays cross these —,
+   * those of them split into several pieces, and those left open (rays
+   * leave there and re-enter by depth peeling; a warning names them).
+   */
+  vtkIdType GetNumberOfLinkedBoundaryFaces();
+  vtkIdType GetNumberOfSplitBoundaryFaces();
+  vtkIdType GetNumberOfUnlinkedBoundaryFaces();
+  ///@}
+
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
   void ReleaseGraphicsResources(vtkWindow*) override;
 

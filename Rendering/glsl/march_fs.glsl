@@ -114,6 +114,39 @@ vec4 facePlane(int t, int f)
   return facePlanesTexel(GEOMETRY_TEXELS * t + f);
 }
 
+// Out through a boundary face split into pieces (the imaginary faces of a
+// convexified grid on it, listed from texel `list`: n, then their codes): the
+// piece x (the exit point, on the face) lies in. x lies in the face of piece
+// (cell c, face e) when it is inside c's three other face planes
+// (n_f . x <= d_f); the piece it is least outside of is taken, so a point on
+// an edge between pieces goes to one of them. -1: no piece (not reached for
+// a valid list).
+int splitFacePiece(int list, vec3 x)
+{
+  int n = neighborsTexel(list).x;
+  int piece = -1;
+  float leastOutside = INFINITY;
+  for (int i = 0; i < MAXIMUM_SPLIT_PIECES && i < n; ++i)
+  {
+    int code = neighborsTexel(list + (i + 1) / 4)[(i + 1) & 3];
+    int c = code / FACES;
+    int e = code - FACES * c;
+    float outside = -INFINITY;
+    for (int f = 0; f < 4; ++f)
+    {
+      vec4 p = facePlane(c, f);
+      outside = f == e ? outside : max(outside, dot(p.xyz, x) - p.w);
+    }
+    if (outside < leastOutside)
+    {
+      leastOutside = outside;
+      piece = code;
+    }
+  }
+  loopsLeft -= 5 * min(n, MAXIMUM_SPLIT_PIECES);
+  return piece;
+}
+
 
 // The face of a flat cell (corners c_v, face f = the three other than c_f),
 // other than `entryFace`, whose triangle best contains x: the largest
@@ -288,6 +321,10 @@ void main()
       break;
     }
     int next = neighborsTexel(NEIGHBOR_TEXELS * cell)[exitFace];
+    if (SPLIT_FACES && next >= SPLIT_FACE)
+    {
+      next = splitFacePiece(next - SPLIT_FACE, origin + t * direction);
+    }
     if (next == -1)
     {
       break;
