@@ -261,6 +261,20 @@ int vtkUnstructuredGridConvexify::RequestData(
   // The grid, then the new points and the imaginary tetrahedra.
   output->DeepCopy(grid);
   vtkPoints* points = output->GetPoints();
+  if (!fill.NewPoints.empty() && points->GetDataType() != VTK_DOUBLE)
+  {
+    // New points lie on the input's faces: stored in float they would be
+    // off them by float rounding, enough to break the faces' conformity.
+    vtkNew<vtkPoints> doubles;
+    doubles->SetDataTypeToDouble();
+    doubles->SetNumberOfPoints(points->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    {
+      doubles->SetPoint(i, points->GetPoint(i));
+    }
+    output->SetPoints(doubles);
+    points = doubles;
+  }
   for (const auto& p : fill.NewPoints)
   {
     points->InsertNextPoint(p.data());

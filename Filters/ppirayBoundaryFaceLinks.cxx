@@ -90,7 +90,7 @@ BoundaryFaceLinks LinkBoundaryFaces(vtkUnstructuredGrid* grid, const std::vector
   for (vtkIdType t = 0; t < numberOfTets; ++t)
   {
     const vtkIdType c = cellIds[t];
-    if (flat[t] || c >= across->GetNumberOfTuples())
+    if (c >= across->GetNumberOfTuples())
     {
       continue;
     }

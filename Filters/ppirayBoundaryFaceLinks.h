@@ -48,8 +48,9 @@ struct BoundaryFaceLinks
  * Links of the open faces of the tetrahedra `tets` (4 point ids each, of
  * `grid`'s cells `cellIds`, in cell order) to the imaginary faces on them.
  * `local`: the points (3 doubles each), `open[4 t + f]`: whether face f of
- * tetrahedron t has no neighbour, `flat[t]`: whether it has no volume (never
- * linked). Empty without the cell array.
+ * tetrahedron t is a boundary face, `flat[t]`: whether it has no volume (a
+ * flat mesh tetrahedron is never linked; a flat imaginary one is a piece
+ * like the others, crossed with zero length). Empty without the cell array.
  */
 PPIRAYFILTERS_EXPORT BoundaryFaceLinks LinkBoundaryFaces(vtkUnstructuredGrid* grid,
   const std::vector<vtkIdType>& tets, const std::vector<vtkIdType>& cellIds, const double* local,

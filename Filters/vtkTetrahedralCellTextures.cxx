@@ -157,10 +157,10 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     this->Neighbors[k] = n < 0 ? NoNeighbor() : NeighborCode(n, neighborFaces[k], folded, inPlace);
   }
 
-  const std::vector<unsigned char> linked = this->LinkBoundaryFaces(grid, neighbors);
-
-  // Boundary triangles wound outward, over a compact set of points.
+  // Boundary triangles wound outward, over a compact set of points, but for
+  // those joined to the imaginary cells on them.
   const std::vector<vtkIdType>& boundary = adjacency->GetBoundaryFaces();
+  const std::vector<unsigned char> linked = this->LinkBoundaryFaces(grid, boundary);
   std::vector<vtkIdType> pointMap(numberOfPoints, -1);
   for (size_t k = 0; k < boundary.size(); k += 2)
   {
@@ -199,19 +199,19 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
 
 //------------------------------------------------------------------------------
 std::vector<unsigned char> vtkTetrahedralCellTextures::LinkBoundaryFaces(
-  vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& neighbors)
+  vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& boundary)
 {
   this->NumberOfLinkedFaces = this->NumberOfSplitFaces = this->NumberOfUnlinkedFaces = 0;
   this->MaximumPiecesPerFace = 0;
-  std::vector<unsigned char> linked(neighbors.size(), 0);
+  std::vector<unsigned char> linked(this->Neighbors.size(), 0);
   if (!grid->GetCellData()->GetArray(ppiray::BoundaryCellArrayName))
   {
     return linked;
   }
-  std::vector<unsigned char> open(neighbors.size());
-  for (size_t k = 0; k < neighbors.size(); ++k)
+  std::vector<unsigned char> open(this->Neighbors.size(), 0);
+  for (size_t k = 0; k < boundary.size(); k += 2)
   {
-    open[k] = neighbors[k] < 0 ? 1 : 0;
+    open[4 * boundary[k] + boundary[k + 1]] = 1;
   }
   const ppiray::BoundaryFaceLinks links = ppiray::LinkBoundaryFaces(
     grid, this->Tets, this->CellIds, this->LocalPoints.data(), open, this->Degenerate);

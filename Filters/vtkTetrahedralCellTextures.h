@@ -85,7 +85,7 @@ public:
   static constexpr int NoNeighbor() { return -1; }
   static constexpr int TurnBack() { return 1 << 29; }
   static constexpr int SplitFace() { return 1 << 30; }
-  static constexpr int MaximumPieces() { return 64; }
+  static constexpr int MaximumPieces() { return 1024; }
   static int NeighborCode(vtkIdType tet, int face, bool folded, bool turnBack)
   {
     const int code = static_cast<int>(4 * tet + face);
@@ -173,11 +173,11 @@ protected:
   vtkTetrahedralCellTextures() = default;
   ~vtkTetrahedralCellTextures() override = default;
 
-  // Joins open faces to the imaginary faces on them (convexified grids):
-  // neighbour codes both ways, lists of pieces appended to Neighbors;
-  // returns which faces (4 t + f) are no longer boundary.
+  // Joins boundary faces (pairs tetrahedron, face) to the imaginary faces
+  // on them (convexified grids): neighbour codes both ways, lists of pieces
+  // appended to Neighbors; returns which faces (4 t + f) are joined.
   std::vector<unsigned char> LinkBoundaryFaces(
-    vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& neighbors);
+    vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& boundary);
 
   // Whether the triangle of flat tetrahedron t's corners (local indices,
   // counter-clockwise) faces the first non-flat cell reached from t through

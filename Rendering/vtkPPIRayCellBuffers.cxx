@@ -41,7 +41,7 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
   glsl << "const int SPLIT_FACE = " << layout.SplitFace << ";\n"
        << "const bool SPLIT_FACES = " << (pieces > 0 ? "true" : "false") << ";\n"
        << "const int MAXIMUM_SPLIT_PIECES = " << pieces << ";\n"
-       << "const int SPLIT_LOOPS = " << 5 * pieces << ";\n";
+       << "const int SPLIT_LOOPS = " << 8 * pieces << ";\n";
   glsl << this->Geometry.TexelFunction(layout.GeometryName, "samplerBuffer", "vec4")
        << this->Neighbors.TexelFunction(layout.NeighborName, "isamplerBuffer", "ivec4")
        << this->Field.TexelFunction(layout.FieldName, "samplerBuffer", "vec4");

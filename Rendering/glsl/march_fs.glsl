@@ -114,13 +114,30 @@ vec4 facePlane(int t, int f)
   return facePlanesTexel(GEOMETRY_TEXELS * t + f);
 }
 
+// How far x lies outside triangle (a, b, c) in its plane: the largest
+// distance past one of its edges, m_i . (v_i - x) with m_i the unit inward
+// normal of edge v_i v_i+1 in the plane (negative inside).
+float outsideTriangle(vec3 a, vec3 b, vec3 c, vec3 x)
+{
+  vec3 v[3] = vec3[3](a, b, c);
+  vec3 n = cross(b - a, c - a);
+  float outside = -INFINITY;
+  for (int i = 0; i < 3; ++i)
+  {
+    vec3 inward = normalize(cross(n, v[(i + 1) % 3] - v[i]));
+    outside = max(outside, dot(inward, v[i] - x));
+  }
+  return outside;
+}
+
 // Out through a boundary face split into pieces (the imaginary faces of a
 // convexified grid on it, listed from texel `list`: n, then their codes): the
 // piece x (the exit point, on the face) lies in. x lies in the face of piece
 // (cell c, face e) when it is inside c's three other face planes
-// (n_f . x <= d_f); the piece it is least outside of is taken, so a point on
-// an edge between pieces goes to one of them. -1: no piece (not reached for
-// a valid list).
+// (n_f . x <= d_f), or, c flat (its corners stored), inside the triangle of
+// the corners other than e; the piece it is least outside of is taken, so a
+// point on an edge between pieces goes to one of them. -1: no piece (not
+// reached for a valid list). SPLIT_LOOPS: 8 per piece.
 int splitFacePiece(int list, vec3 x)
 {
   int n = neighborsTexel(list).x;
@@ -131,11 +148,22 @@ int splitFacePiece(int list, vec3 x)
     int code = neighborsTexel(list + (i + 1) / 4)[(i + 1) & 3];
     int c = code / FACES;
     int e = code - FACES * c;
-    float outside = -INFINITY;
+    vec4 p[4];
     for (int f = 0; f < 4; ++f)
     {
-      vec4 p = facePlane(c, f);
-      outside = f == e ? outside : max(outside, dot(p.xyz, x) - p.w);
+      p[f] = facePlane(c, f);
+    }
+    float outside = -INFINITY;
+    if (FLAT_CELLS && p[0].w > FLAT_CELL)
+    {
+      outside = outsideTriangle(p[(e + 1) & 3].xyz, p[(e + 2) & 3].xyz, p[(e + 3) & 3].xyz, x);
+    }
+    else
+    {
+      for (int f = 0; f < 4; ++f)
+      {
+        outside = f == e ? outside : max(outside, dot(p[f].xyz, x) - p[f].w);
+      }
     }
     if (outside < leastOutside)
     {
@@ -143,7 +171,7 @@ int splitFacePiece(int list, vec3 x)
       piece = code;
     }
   }
-  loopsLeft -= 5 * min(n, MAXIMUM_SPLIT_PIECES);
+  loopsLeft -= 8 * min(n, MAXIMUM_SPLIT_PIECES);
   return piece;
 }
 

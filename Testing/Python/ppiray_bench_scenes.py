@@ -10,6 +10,13 @@
                    the vtkDataSetTriangleFilter output)
     bluntfin-hex-spikes  the same, 70 control points with one-value-wide spikes
     loxpost-hex    LOX Post as it is: 102,675 hexahedra
+Non-convex scenes of the convexification comparison (ppiray_convexify_compare.py),
+tetrahedralized:
+    wavelet-hole   Data/wavelet_hole.vtu: one cavity
+    sponge         the wavelet over [-16, 16]^3 with a 6^3 lattice of balls carved out:
+                   many re-entries per ray
+    disk           disk_out_ref (Exodus, Temp): the CVD reactor, a disk inside a cylinder
+    unisim         UNISIM-II (corner-point reservoir, faults, inactive cells hidden; z)
 """
 import os
 
@@ -24,6 +31,7 @@ from ppiray_scene import load, volume_property
 NAMES = ["wavelet", "graded", "graded-spikes", "graded-opaque", "bluntfin", "loxpost",
          "bluntfin-hex", "bluntfin-hex-spikes", "loxpost-hex"]
 HEXAHEDRAL = {"bluntfin-hex", "bluntfin-hex-spikes", "loxpost-hex"}
+NON_CONVEX = ["graded", "wavelet-hole", "sponge", "loxpost", "bluntfin", "disk", "unisim"]
 
 DERIVED = {
     "wavelet": "RTData",
@@ -124,6 +132,35 @@ def volume_property_for_range(lo, hi):
     return prop
 
 
+def _sponge():
+    """The wavelet over [-16, 16]^3 without the voxels inside balls of radius
+    2 centred on a 6^3 lattice (spacing 32/6), tetrahedralized."""
+    from vtkmodules.vtkCommonDataModel import vtkImplicitBoolean, vtkSphere
+    from vtkmodules.vtkFiltersExtraction import vtkExtractGeometry
+    source = vtkRTAnalyticSource()
+    source.SetWholeExtent(-16, 16, -16, 16, -16, 16)
+    source.Update()
+    balls = vtkImplicitBoolean()
+    balls.SetOperationTypeToUnion()
+    step = 32.0 / 6
+    for i in range(6):
+        for j in range(6):
+            for k in range(6):
+                ball = vtkSphere()
+                ball.SetCenter(-16 + step * (i + 0.5), -16 + step * (j + 0.5),
+                               -16 + step * (k + 0.5))
+                ball.SetRadius(2.0)
+                balls.AddFunction(ball)
+    outside = vtkExtractGeometry()
+    outside.SetImplicitFunction(balls)
+    outside.ExtractInsideOff()
+    outside.ExtractBoundaryCellsOff()
+    outside.SetInputData(source.GetOutput())
+    outside.Update()
+    grid = _tetrahedralize(outside.GetOutput())
+    return grid, volume_property(grid)
+
+
 def build(name, root, data_root, wavelet_extent=16):
     """(grid, vtkVolumeProperty) of scene `name`; None if its data is missing."""
     if name == "wavelet":
@@ -132,6 +169,21 @@ def build(name, root, data_root, wavelet_extent=16):
         source.SetWholeExtent(-e, e, -e, e, -e, e)
         source.Update()
         grid = _tetrahedralize(source.GetOutput())
+        return grid, volume_property(grid)
+    if name == "wavelet-hole":
+        grid = load(os.path.join(root, "Data", "wavelet_hole.vtu"))
+        return grid, volume_property(grid)
+    if name == "sponge":
+        return _sponge()
+    if name in ("disk", "unisim"):
+        import ppiray_datasets
+        loader, array, points = ppiray_datasets.DATASETS[
+            "disk_out_ref" if name == "disk" else "unisim2"]
+        if not os.path.isdir(os.path.join(data_root, "disk_out_ref" if name == "disk"
+                                          else "unisim2")):
+            return None
+        grid = _tetrahedralize(loader())
+        ppiray_datasets.select(grid, array, points)
         return grid, volume_property(grid)
     if name.startswith("graded"):
         grid = load(os.path.join(root, "Data", "graded_holes.vtu"))

@@ -54,15 +54,17 @@ def orbit(grid, prop, size, views, check, start_camera=None):
             rgba, _ = reference_rgba(check, prop, camera, size)
             first = compare_with_reference(images[0], rgba)
     gpu = mapper.GetGPUMemorySize()
+    open_faces = mapper.GetNumberOfUnlinkedBoundaryFaces()
     window.Finalize()
     return (float(np.median(times)), peels, gpu, images,
-            first if check is not None else None, first_camera)
+            first if check is not None else None, first_camera, open_faces)
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--scenes", default="graded,loxpost,bluntfin",
-                        help="comma-separated scenes of ppiray_bench_scenes.py")
+    parser.add_argument("--scenes", default=None,
+                        help="comma-separated scenes of ppiray_bench_scenes.py (default: its "
+                             "NON_CONVEX list)")
     parser.add_argument("--size", type=int, default=512)
     parser.add_argument("--views", type=int, default=8)
     parser.add_argument("--check", action="store_true",
@@ -71,11 +73,13 @@ def main():
 
     import ppiray
     import ppiray_bench_scenes
+    scenes = args.scenes.split(",") if args.scenes else ppiray_bench_scenes.NON_CONVEX
     print("| scene | cells | convexify (s) | imaginary cells | Steiner points | merged points, "
           "dropped triangles | peels: ms/frame, peels, GPU MB | convexified: ms/frame, peels, "
-          "GPU MB | ratio | max diff (1/255) | vs reference p99/max (peeled; convexified) |")
+          "GPU MB, faces left open | ratio | max diff (1/255) | vs reference p99/max (peeled; "
+          "convexified) |")
     print("|---|---:|---:|---:|---:|---|---|---|---:|---:|---|")
-    for name in args.scenes.split(","):
+    for name in scenes:
         built = ppiray_bench_scenes.build(name, ROOT, DATA_ROOT)
         if built is None:
             print("| %s | no data under %s |" % (name, DATA_ROOT))
@@ -93,12 +97,12 @@ def main():
         diff = max(float(np.abs(x - y).max()) for x, y in zip(a[3], b[3]))
         vs = ("%.2f/%.2f; %.2f/%.2f" % (a[4]["p99"], a[4]["max"], b[4]["p99"], b[4]["max"])
               if args.check else "not checked")
-        print("| %s | %d | %.2f | %d | %d | %d, %d | %.1f, %d, %.1f | %.1f, %d, %.1f | %.2f | %.0f "
-              "| %s |" % (
+        print("| %s | %d | %.2f | %d | %d | %d, %d | %.1f, %d, %.1f | %.1f, %d, %.1f, %d | %.2f "
+              "| %.0f | %s |" % (
                   name, grid.GetNumberOfCells(), seconds, convexify.GetNumberOfImaginaryCells(),
                   convexify.GetNumberOfSteinerPoints(), convexify.GetNumberOfMergedPoints(),
                   convexify.GetNumberOfDroppedTriangles(), a[0], a[1], a[2] / 1e6, b[0], b[1],
-                  b[2] / 1e6, b[0] / a[0], diff, vs), flush=True)
+                  b[2] / 1e6, b[6], b[0] / a[0], diff, vs), flush=True)
 
 
 if __name__ == "__main__":
