@@ -4,6 +4,7 @@
 #include "ppirayConformingTetrahedra.h"
 #include "ppirayHiddenCells.h"
 #include "ppirayMeshLocalFrame.h"
+#include "ppirayReflexEdges.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -72,6 +73,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->NumberOfFoldedFaces = 0;
   this->NumberOfLinkedFaces = this->NumberOfSplitFaces = this->NumberOfUnlinkedFaces = 0;
   this->MaximumPiecesPerFace = 0;
+  this->NumberOfReentryFaces = 0;
   const vtkIdType numberOfTets = this->GetNumberOfTetrahedra();
   if (numberOfTets == 0 || !grid->GetPoints())
   {
@@ -192,6 +194,28 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
       this->BoundaryTriangles.push_back(static_cast<unsigned int>(pointMap[id]));
     }
     this->BoundaryFaces.push_back(static_cast<int>(4 * t + f));
+  }
+
+  // Faces with reflex edges: the faces across them, for the march to enter
+  // again where it leaves next to one.
+  const std::vector<int> partners =
+    ppiray::ReflexEdgePartners(this->BoundaryPoints, this->BoundaryTriangles);
+  this->NumberOfReentryFaces = 0;
+  for (size_t k = 0; k < this->BoundaryFaces.size(); ++k)
+  {
+    const int* across = partners.data() + 3 * k;
+    if (across[0] < 0 && across[1] < 0 && across[2] < 0)
+    {
+      continue;
+    }
+    this->Neighbors[this->BoundaryFaces[k]] =
+      ReentryFace() + static_cast<int>(this->Neighbors.size() / 4);
+    for (int e = 0; e < 3; ++e)
+    {
+      this->Neighbors.push_back(across[e] < 0 ? NoNeighbor() : this->BoundaryFaces[across[e]]);
+    }
+    this->Neighbors.push_back(NoNeighbor());
+    ++this->NumberOfReentryFaces;
   }
   this->Modified();
   return true;
@@ -368,4 +392,5 @@ void vtkTetrahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSplitFaces: " << this->NumberOfSplitFaces << "\n";
   os << indent << "MaximumPiecesPerFace: " << this->MaximumPiecesPerFace << "\n";
   os << indent << "NumberOfUnlinkedFaces: " << this->NumberOfUnlinkedFaces << "\n";
+  os << indent << "NumberOfReentryFaces: " << this->NumberOfReentryFaces << "\n";
 }

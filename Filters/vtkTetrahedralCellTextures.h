@@ -80,11 +80,15 @@ public:
    * neighbour not); NoNeighbor() on the boundary; SplitFace() + i for a
    * boundary face split into pieces (convexification), whose list starts
    * at texel i of GetNeighbors(): (n, code_1, code_2, ...), the codes of the
-   * n imaginary faces on it, in texels of 4 (at most MaximumPieces()).
+   * n imaginary faces on it, in texels of 4 (at most MaximumPieces());
+   * ReentryFace() + i for a boundary face with a reflex edge
+   * (ppirayReflexEdges.h), texel i holding the codes of the boundary faces
+   * across its three edges (-1: not reflex) and -1.
    */
   static constexpr int NoNeighbor() { return -1; }
   static constexpr int TurnBack() { return 1 << 29; }
   static constexpr int SplitFace() { return 1 << 30; }
+  static constexpr int ReentryFace() { return (1 << 30) + (1 << 29); }
   static constexpr int MaximumPieces() { return 1024; }
   static int NeighborCode(vtkIdType tet, int face, bool folded, bool turnBack)
   {
@@ -147,6 +151,9 @@ public:
   vtkGetMacro(MaximumPiecesPerFace, int);
   vtkGetMacro(NumberOfUnlinkedFaces, vtkIdType);
   ///@}
+
+  /** Boundary faces with a reflex edge (a re-entry across it is checked). */
+  vtkGetMacro(NumberOfReentryFaces, vtkIdType);
   /** Hexahedra, voxels, wedges and pyramids split into tetrahedra. */
   vtkGetMacro(NumberOfSplitCells, vtkIdType);
   /** Quadratic (or higher-order) cells, split through their linear corners. */
@@ -212,6 +219,7 @@ protected:
   vtkIdType NumberOfSplitFaces = 0;
   int MaximumPiecesPerFace = 0;
   vtkIdType NumberOfUnlinkedFaces = 0;
+  vtkIdType NumberOfReentryFaces = 0;
   vtkIdType NumberOfSplitCells = 0;
   vtkIdType NumberOfQuadraticCells = 0;
 

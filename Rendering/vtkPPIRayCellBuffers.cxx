@@ -9,6 +9,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <iomanip>
@@ -35,13 +36,18 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
        // Markers are compared against half their value: no real value comes near.
        << "const float FLAT_CELL = " << 0.5 * layout.FlatCellMarker << ";\n"
        << "const float EMPTY_CELL = " << 0.5 * layout.EmptyCellOffset << ";\n";
-  // Split boundary faces (convexified grids): the pieces searched per step
-  // are taken from the loop budget after the fact (march_common_fs.glsl).
-  const int pieces = this->GetFeatures().MaximumSplitPieces;
+  // Listed exit faces: split boundary faces (convexified grids) and faces
+  // with reflex edges; the search at one is taken from the loop budget after
+  // the fact (EXIT_LOOPS, march_common_fs.glsl).
+  const Features features = this->GetFeatures();
+  const int pieces = features.MaximumSplitPieces;
   glsl << "const int SPLIT_FACE = " << layout.SplitFace << ";\n"
        << "const bool SPLIT_FACES = " << (pieces > 0 ? "true" : "false") << ";\n"
        << "const int MAXIMUM_SPLIT_PIECES = " << pieces << ";\n"
-       << "const int SPLIT_LOOPS = " << 8 * pieces << ";\n";
+       << "const int REENTRY_FACE = " << layout.ReentryFace << ";\n"
+       << "const bool REENTRY_EDGES = " << (features.ReentryEdges ? "true" : "false") << ";\n"
+       << "const int EXIT_LOOPS = " << std::max(8 * pieces, features.ReentryEdges ? 16 : 0)
+       << ";\n";
   glsl << this->Geometry.TexelFunction(layout.GeometryName, "samplerBuffer", "vec4")
        << this->Neighbors.TexelFunction(layout.NeighborName, "isamplerBuffer", "ivec4")
        << this->Field.TexelFunction(layout.FieldName, "samplerBuffer", "vec4");

@@ -58,6 +58,7 @@ public:
     float FlatCellMarker;  // w of a flat cell's geometry texels (0: none stored)
     float EmptyCellOffset; // first field value of a cell that renders empty
     int SplitFace = 0;     // neighbour codes from here on name a split face's list (0: none)
+    int ReentryFace = 0;   // ... and from here on a reflex-edge face's partners (0: none)
   };
   virtual Layout GetLayout() const = 0;
 
@@ -75,6 +76,7 @@ public:
     bool FlatCells = false;     // zero-volume cells crossed with zero length
     bool Folds = false;         // folded faces walked back
     int MaximumSplitPieces = 0; // most pieces of a boundary face split by convexification
+    bool ReentryEdges = false;  // boundary faces with reflex edges, re-entered across them
   };
   virtual Features GetFeatures() const = 0;
 

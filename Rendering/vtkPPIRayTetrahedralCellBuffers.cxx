@@ -32,7 +32,7 @@ vtkPPIRayCellBuffers::Layout vtkPPIRayTetrahedralCellBuffers::GetLayout() const
   using Cells = vtkTetrahedralCellTextures;
   return { "facePlanes", Cells::FacePlaneTexels(), "neighbors", Cells::NeighborTexels(), "field",
     Cells::FieldTexels(), 4, Cells::TurnBack(), Cells::FlatCellMarker(),
-    Cells::TransparentCellOffset(), Cells::SplitFace() };
+    Cells::TransparentCellOffset(), Cells::SplitFace(), Cells::ReentryFace() };
 }
 
 //------------------------------------------------------------------------------
@@ -42,6 +42,7 @@ vtkPPIRayCellBuffers::Features vtkPPIRayTetrahedralCellBuffers::GetFeatures() co
   features.FlatCells = this->Cells->GetNumberOfDegenerateTetrahedra() > 0;
   features.Folds = this->Cells->GetNumberOfFoldedFaces() > 0;
   features.MaximumSplitPieces = this->Cells->GetMaximumPiecesPerFace();
+  features.ReentryEdges = this->Cells->GetNumberOfReentryFaces() > 0;
   return features;
 }
 
@@ -85,6 +86,8 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayTetrahedralCellBuffers::BuildGeometry
     return BuildResult::Failed;
   }
   if (cells.GetNumberOfTetrahedra() > (VTK_INT_MAX / 4) ||
+      cells.GetNeighbors().size() / 4 >=
+        static_cast<size_t>(vtkTetrahedralCellTextures::TurnBack()) ||
       cells.GetBoundaryFaces().size() > (1u << 24))
   {
     vtkErrorWithObjectMacro(

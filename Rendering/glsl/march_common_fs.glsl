@@ -11,9 +11,11 @@ uniform int maximumSteps;
 // The cell layout: GEOMETRY_TEXELS, NEIGHBOR_TEXELS, FIELD_TEXELS per cell,
 // neighbour code = FACES cell + face, TURN_BACK, the FLAT_CELL and EMPTY_CELL
 // thresholds, SPLIT_FACE + list: a boundary face split into MAXIMUM_SPLIT_PIECES
-// or fewer pieces (written by vtkPPIRayCellBuffers); FLAT_CELLS, FOLDS,
-// SPLIT_FACES: whether the mesh has flat cells to cross, folds to walk back,
-// split faces to cross (the march leaves out what it does not need).
+// or fewer pieces, REENTRY_FACE + list: a boundary face with reflex edges
+// (written by vtkPPIRayCellBuffers); FLAT_CELLS, FOLDS, SPLIT_FACES,
+// REENTRY_EDGES: whether the mesh has flat cells to cross, folds to walk
+// back, split faces to cross, reflex edges to re-enter across (the march
+// leaves out what it does not need).
 //PPIRay::Cells::Dec
 uniform float terminationAlpha;
 
@@ -37,13 +39,13 @@ const float INFINITY = 3.0e38;
 // (declared by the march), PIECE_LOOPS per piece between control points (the
 // integration mode's worst case), the control-point walks as they go; LOOP_RESERVE, above every count
 // taken after the fact (two walks over at most 4,096 control points, the
-// search of a split face's pieces), keeps
+// search at a listed exit face), keeps
 // the total under the driver's. Where the budget runs out the ray stops at a
 // cell and a ray parameter and the next pass continues it there
 // (continuation: its code and the steps taken so far in this peel, which
 // MaximumNumberOfSteps bounds across passes, in the third target).
 const int LOOP_BUDGET = 49152;
-const int LOOP_RESERVE = 2 * 4096 + 64 + SPLIT_LOOPS;
+const int LOOP_RESERVE = 2 * 4096 + 64 + EXIT_LOOPS;
 int loopsLeft = LOOP_BUDGET;
 bool outOfLoops = false;   // the work stopped for the budget ...
 float cutAt = 0.0;         // ... this far into the stretch it was given

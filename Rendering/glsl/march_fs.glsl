@@ -108,10 +108,72 @@ int integrateTetrahedronSegment(float sFront, float sBack, float len, vec3 g, ve
 
 //PPIRay::Ray::Impl
 
+// Width of the pixel at ray parameter t: how far the next pixel's ray is
+// from this one there.
+float pixelFootprint(float t)
+{
+  vec2 ndc = 2.0 * texCoord - 1.0;
+  vec3 o, d, o1, d1;
+  pixelRay(ndc, o, d);
+  pixelRay(ndc + vec2(2.0 / float(textureSize(previousAccumulated, 0).x), 0.0), o1, d1);
+  return length(o1 + t * d1 - o - t * d);
+}
+
 // Plane of face f of cell t.
 vec4 facePlane(int t, int f)
 {
   return facePlanesTexel(GEOMETRY_TEXELS * t + f);
+}
+
+// Out through a boundary face with reflex edges (its partners across its
+// three edges listed at texel `list`, ppirayReflexEdges.h), at ray
+// parameter t: the partner the ray enters within a quarter of a pixel's
+// width further on, if any (t moves to that entry), else -1. Depth peeling
+// finds such an entry by rasterization, which within a fraction of a pixel
+// of the edge may give the pixel to the face the ray left instead; the ray's
+// own arithmetic decides here, as it did for the exit. An entry is crossing
+// the face plane of a partner (cell c, face e) inwards (n_e . direction < 0)
+// inside c's other three planes (to a thousandth of the pixel).
+int reentryAcrossEdge(int list, vec3 origin, vec3 direction, inout float t)
+{
+  ivec4 across = neighborsTexel(list);
+  float footprint = pixelFootprint(t);
+  float tEntry = t + 0.25 * footprint;
+  int entry = -1;
+  for (int i = 0; i < 3; ++i)
+  {
+    if (across[i] < 0)
+    {
+      continue;
+    }
+    int c = across[i] / FACES;
+    int e = across[i] - FACES * c;
+    vec4 p[4];
+    for (int f = 0; f < 4; ++f)
+    {
+      p[f] = facePlane(c, f);
+    }
+    float along = dot(p[e].xyz, direction);
+    if ((FLAT_CELLS && p[0].w > FLAT_CELL) || !(along < 0.0))
+    {
+      continue;
+    }
+    float te = max((p[e].w - dot(p[e].xyz, origin)) / along, t);
+    vec3 y = origin + te * direction;
+    float outside = -INFINITY;
+    for (int f = 0; f < 4; ++f)
+    {
+      outside = f == e ? outside : max(outside, dot(p[f].xyz, y) - p[f].w);
+    }
+    if (te <= tEntry && outside <= 1.0e-3 * footprint)
+    {
+      tEntry = te;
+      entry = across[i];
+    }
+  }
+  loopsLeft -= 16;
+  t = entry >= 0 ? tEntry : t;
+  return entry;
 }
 
 // How far x lies outside triangle (a, b, c) in its plane: the largest
@@ -137,7 +199,7 @@ float outsideTriangle(vec3 a, vec3 b, vec3 c, vec3 x)
 // (n_f . x <= d_f), or, c flat (its corners stored), inside the triangle of
 // the corners other than e; the piece it is least outside of is taken, so a
 // point on an edge between pieces goes to one of them. -1: no piece (not
-// reached for a valid list). SPLIT_LOOPS: 8 per piece.
+// reached for a valid list). EXIT_LOOPS: 8 per piece.
 int splitFacePiece(int list, vec3 x)
 {
   int n = neighborsTexel(list).x;
@@ -349,7 +411,11 @@ void main()
       break;
     }
     int next = neighborsTexel(NEIGHBOR_TEXELS * cell)[exitFace];
-    if (SPLIT_FACES && next >= SPLIT_FACE)
+    if (REENTRY_EDGES && next >= REENTRY_FACE)
+    {
+      next = backwards ? -1 : reentryAcrossEdge(next - REENTRY_FACE, origin, direction, t);
+    }
+    else if (SPLIT_FACES && next >= SPLIT_FACE)
     {
       next = splitFacePiece(next - SPLIT_FACE, origin + t * direction);
     }

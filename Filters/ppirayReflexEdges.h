@@ -1,0 +1,35 @@
+/**
+ * @file   ppirayReflexEdges.h
+ * @brief  boundary triangles that face each other across a reflex edge
+ *
+ * Where a mesh's boundary surface bends inwards (a reflex edge: the empty
+ * side of the edge spans less than 180 degrees — the rim of a hole, the tip
+ * of a crack, cells touching along an edge), a ray that leaves the mesh
+ * through one triangle near the edge may enter it again at once through the
+ * triangle across the empty side. Depth peeling finds that entry by
+ * rasterization, which near the edge can disagree with the ray's own
+ * arithmetic and lose it; the march checks these partners itself.
+ */
+#ifndef ppirayReflexEdges_h
+#define ppirayReflexEdges_h
+
+#include "ppirayFiltersModule.h" // for export macro
+
+#include <vector>
+
+namespace ppiray
+{
+/**
+ * For each triangle of a surface (`triangles`: 3 indices into `points`, 3
+ * floats each, wound counter-clockwise seen from outside), the triangle
+ * across each of its edges e = (v_e, v_e+1) on the empty side, where that
+ * side's wedge is under 180 degrees: 3 ints per triangle, -1 where there is
+ * none. Around an edge shared by several triangles (non-manifold), the
+ * partner is the next triangle turning from this one about the edge towards
+ * its outward normal; the wedge angle is that turn.
+ */
+PPIRAYFILTERS_EXPORT std::vector<int> ReflexEdgePartners(
+  const std::vector<float>& points, const std::vector<unsigned int>& triangles);
+}
+
+#endif
