@@ -46,7 +46,7 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
        << "const int MAXIMUM_SPLIT_PIECES = " << pieces << ";\n"
        << "const int REENTRY_FACE = " << layout.ReentryFace << ";\n"
        << "const bool REENTRY_EDGES = " << (features.ReentryEdges ? "true" : "false") << ";\n"
-       << "const int EXIT_LOOPS = " << std::max(8 * pieces, features.ReentryEdges ? 16 : 0)
+       << "const int EXIT_LOOPS = " << std::max(8 * pieces + 1, features.ReentryEdges ? 17 : 0)
        << ";\n";
   glsl << this->Geometry.TexelFunction(layout.GeometryName, "samplerBuffer", "vec4")
        << this->Neighbors.TexelFunction(layout.NeighborName, "isamplerBuffer", "ivec4")

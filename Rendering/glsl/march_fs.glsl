@@ -133,46 +133,43 @@ vec4 facePlane(int t, int f)
 // of the edge may give the pixel to the face the ray left instead; the ray's
 // own arithmetic decides here, as it did for the exit. An entry is crossing
 // the face plane of a partner (cell c, face e) inwards (n_e . direction < 0)
-// inside c's other three planes (to a thousandth of the pixel).
+// inside c's other three planes (to float rounding). The pixel's width is
+// found only for an entry.
 int reentryAcrossEdge(int list, vec3 origin, vec3 direction, inout float t)
 {
   ivec4 across = neighborsTexel(list);
-  float footprint = pixelFootprint(t);
-  float tEntry = t + 0.25 * footprint;
+  float tEntry = INFINITY;
   int entry = -1;
   for (int i = 0; i < 3; ++i)
   {
-    if (across[i] < 0)
+    int c = max(across[i], 0) / FACES;
+    int e = max(across[i], 0) - FACES * c;
+    vec4 pe = facePlane(c, e);
+    float along = dot(pe.xyz, direction);
+    if (across[i] < 0 || (FLAT_CELLS && pe.w > FLAT_CELL) || !(along < 0.0))
     {
       continue;
     }
-    int c = across[i] / FACES;
-    int e = across[i] - FACES * c;
-    vec4 p[4];
-    for (int f = 0; f < 4; ++f)
-    {
-      p[f] = facePlane(c, f);
-    }
-    float along = dot(p[e].xyz, direction);
-    if ((FLAT_CELLS && p[0].w > FLAT_CELL) || !(along < 0.0))
-    {
-      continue;
-    }
-    float te = max((p[e].w - dot(p[e].xyz, origin)) / along, t);
+    float te = max((pe.w - dot(pe.xyz, origin)) / along, t);
     vec3 y = origin + te * direction;
     float outside = -INFINITY;
-    for (int f = 0; f < 4; ++f)
+    for (int f = 1; f < 4; ++f)
     {
-      outside = f == e ? outside : max(outside, dot(p[f].xyz, y) - p[f].w);
+      vec4 p = facePlane(c, (e + f) & 3);
+      outside = max(outside, dot(p.xyz, y) - p.w);
     }
-    if (te <= tEntry && outside <= 1.0e-3 * footprint)
+    if (te < tEntry && outside <= 1.0e-6 * abs(te))
     {
       tEntry = te;
       entry = across[i];
     }
   }
-  loopsLeft -= 16;
-  t = entry >= 0 ? tEntry : t;
+  loopsLeft -= 17; // and the outer step loop's iteration
+  if (entry < 0 || tEntry - t > 0.25 * pixelFootprint(t))
+  {
+    return -1;
+  }
+  t = tEntry;
   return entry;
 }
 
@@ -233,7 +230,7 @@ int splitFacePiece(int list, vec3 x)
       piece = code;
     }
   }
-  loopsLeft -= 8 * min(n, MAXIMUM_SPLIT_PIECES);
+  loopsLeft -= 8 * min(n, MAXIMUM_SPLIT_PIECES) + 1; // and the outer step loop's iteration
   return piece;
 }
 
@@ -331,112 +328,131 @@ void main()
   bool backwards = resumeBackwards;
   float continuation = 0.0;
   int step = stepsTaken;
-  for (; step < maximumSteps; ++step)
+  // The steps, cell to cell; a listed exit face (split, or with reflex
+  // edges) ends them, is resolved here, outside the step loop (once per
+  // crossing, not in every step of the lanes that run together), and the
+  // steps go on from the cell it gives.
+  for (int listed = 0; listed < maximumSteps; ++listed)
   {
-    if (!spendLoops(STEP_LOOPS))
+    int pending = -1;
+    for (; step < maximumSteps; ++step)
     {
-      continuation = continuationCode(cell, entryFace, backwards);
-      reached = t;
-      break;
-    }
-    vec4 p[4];
-    for (int f = 0; f < 4; ++f)
-    {
-      p[f] = facePlane(cell, f);
-    }
-    int exitFace = -1;
-    bool flatCell = FLAT_CELLS && p[0].w > FLAT_CELL;
-    if (flatCell)
-    {
-      exitFace = flatCellExit(p, entryFace, origin + t * direction);
-    }
-    else
-    {
-      // Forwards: out through the nearest plane the ray heads out of.
-      // Backwards (the cell's stretch lies behind t): out through the face
-      // the line enters it by, the farthest plane it heads into.
-      bool walkingBack = FOLDS && backwards;
-      float tExit = walkingBack ? -INFINITY : INFINITY;
+      if (!spendLoops(STEP_LOOPS))
+      {
+        continuation = continuationCode(cell, entryFace, backwards);
+        reached = t;
+        break;
+      }
+      vec4 p[4];
       for (int f = 0; f < 4; ++f)
       {
-        float along = dot(p[f].xyz, direction);
-        float tf = (p[f].w - dot(p[f].xyz, origin)) / along;
-        bool better = walkingBack ? (along < 0.0 && tf > tExit) : (along > 0.0 && tf < tExit);
-        if (f != entryFace && better)
-        {
-          tExit = tf;
-          exitFace = f;
-        }
+        p[f] = facePlane(cell, f);
       }
-      if (exitFace >= 0 && !walkingBack)
+      int exitFace = -1;
+      bool flatCell = FLAT_CELLS && p[0].w > FLAT_CELL;
+      if (flatCell)
       {
-        tExit = max(tExit, t);
-        float tEnd = min(tExit, tStop);
-        float tFrom = max(t, tKept);
-        vec4 g = fieldTexel(FIELD_TEXELS * cell);
-        if (g.w > EMPTY_CELL && tEnd > tFrom)
+        exitFace = flatCellExit(p, entryFace, origin + t * direction);
+      }
+      else
+      {
+        // Forwards: out through the nearest plane the ray heads out of.
+        // Backwards (the cell's stretch lies behind t): out through the face
+        // the line enters it by, the farthest plane it heads into.
+        bool walkingBack = FOLDS && backwards;
+        float tExit = walkingBack ? -INFINITY : INFINITY;
+        for (int f = 0; f < 4; ++f)
         {
-          float sFront = dot(g.xyz, origin + tFrom * direction) + g.w;
-          float sBack = dot(g.xyz, origin + tEnd * direction) + g.w;
-          if (BLEND == 0)
+          float along = dot(p[f].xyz, direction);
+          float tf = (p[f].w - dot(p[f].xyz, origin)) / along;
+          bool better = walkingBack ? (along < 0.0 && tf > tExit) : (along > 0.0 && tf < tExit);
+          if (f != entryFace && better)
           {
-            k = integrateTetrahedronSegment(sFront, sBack, tEnd - tFrom, g.xyz,
-              origin + tFrom * direction, direction, k, j, color);
+            tExit = tf;
+            exitFace = f;
           }
-          else
+        }
+        if (exitFace >= 0 && !walkingBack)
+        {
+          tExit = max(tExit, t);
+          float tEnd = min(tExit, tStop);
+          float tFrom = max(t, tKept);
+          vec4 g = fieldTexel(FIELD_TEXELS * cell);
+          if (g.w > EMPTY_CELL && tEnd > tFrom)
           {
-            projectLinearStretch(sFront, sBack, tEnd - tFrom, k, projection);
+            float sFront = dot(g.xyz, origin + tFrom * direction) + g.w;
+            float sBack = dot(g.xyz, origin + tEnd * direction) + g.w;
+            if (BLEND == 0)
+            {
+              k = integrateTetrahedronSegment(sFront, sBack, tEnd - tFrom, g.xyz,
+                origin + tFrom * direction, direction, k, j, color);
+            }
+            else
+            {
+              projectLinearStretch(sFront, sBack, tEnd - tFrom, k, projection);
+            }
+            if (outOfLoops)
+            {
+              continuation = continuationCode(cell, entryFace, backwards);
+              reached = tFrom + cutAt;
+              break;
+            }
           }
-          if (outOfLoops)
+          else if (g.w <= EMPTY_CELL)
           {
-            continuation = continuationCode(cell, entryFace, backwards);
-            reached = tFrom + cutAt;
+            j = isoIntervalAfterEmpty(j, tEnd - tFrom, tEnd);
+          }
+          reached = max(reached, tEnd);
+          if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
+          {
             break;
           }
+          t = tExit;
         }
-        else if (g.w <= EMPTY_CELL)
-        {
-          j = isoIntervalAfterEmpty(j, tEnd - tFrom, tEnd);
-        }
-        reached = max(reached, tEnd);
-        if (tExit >= tStop || before.a + (1.0 - before.a) * color.a >= terminationAlpha)
-        {
-          break;
-        }
-        t = tExit;
       }
+      if (exitFace < 0)
+      {
+        break;
+      }
+      int next = neighborsTexel(NEIGHBOR_TEXELS * cell)[exitFace];
+      if ((SPLIT_FACES || REENTRY_EDGES) && next >= SPLIT_FACE)
+      {
+        pending = backwards ? -1 : next;
+        break;
+      }
+      if (next == -1)
+      {
+        break;
+      }
+      bool folded = FOLDS && next < -1;
+      next = folded ? -next - 2 : next;
+      bool turnBack = FOLDS && next >= TURN_BACK;
+      next -= turnBack ? TURN_BACK : 0;
+      if (folded && turnBack && !backwards)
+      {
+        // Out of an inverted cell into a forward one: back through this one.
+        backwards = true;
+        entryFace = exitFace;
+        continue;
+      }
+      backwards = backwards != folded;
+      cell = next / FACES;
+      entryFace = next - FACES * cell;
     }
-    if (exitFace < 0)
+    if (pending < 0)
     {
       break;
     }
-    int next = neighborsTexel(NEIGHBOR_TEXELS * cell)[exitFace];
-    if (REENTRY_EDGES && next >= REENTRY_FACE)
-    {
-      next = backwards ? -1 : reentryAcrossEdge(next - REENTRY_FACE, origin, direction, t);
-    }
-    else if (SPLIT_FACES && next >= SPLIT_FACE)
-    {
-      next = splitFacePiece(next - SPLIT_FACE, origin + t * direction);
-    }
-    if (next == -1)
+    int next = REENTRY_EDGES && pending >= REENTRY_FACE
+      ? reentryAcrossEdge(pending - REENTRY_FACE, origin, direction, t)
+      : splitFacePiece(pending - SPLIT_FACE, origin + t * direction);
+    if (next < 0)
     {
       break;
     }
-    bool folded = FOLDS && next < -1;
-    next = folded ? -next - 2 : next;
-    bool turnBack = FOLDS && next >= TURN_BACK;
-    next -= turnBack ? TURN_BACK : 0;
-    if (folded && turnBack && !backwards)
-    {
-      // Out of an inverted cell into a forward one: back through this one.
-      backwards = true;
-      entryFace = exitFace;
-      continue;
-    }
-    backwards = backwards != folded;
     cell = next / FACES;
     entryFace = next - FACES * cell;
+    ++step;
   }
   finishPeel(before, color, reached, projection);
   writeContinuation(continuation, step);

@@ -8,8 +8,10 @@ method, the median ms per frame over an orbit of views (after a warm-up
 frame), the largest number of peels, the GPU bytes; the largest difference
 between the two methods' images over all views (1/255) and, for the first
 view, both against the CPU reference of the original mesh (p99, max).
-Prints a Markdown table. Not a test (speed); the convexification's tests are
-in Convexify/Testing/Cxx.
+Prints a Markdown table; --plot FILE also draws the ratio (convexified over
+peeled ms per frame) against the peels the mesh needs, each scene labelled
+with its imaginary cells per mesh cell. Not a test (speed); the
+convexification's tests are in Convexify/Testing/Cxx.
 """
 import argparse
 import os
@@ -69,6 +71,7 @@ def main():
     parser.add_argument("--views", type=int, default=8)
     parser.add_argument("--check", action="store_true",
                         help="compare the first view with the CPU reference (slow on large meshes)")
+    parser.add_argument("--plot", help="write the ratio against the peels to this PNG")
     args = parser.parse_args()
 
     import ppiray
@@ -79,6 +82,7 @@ def main():
           "GPU MB, faces left open | ratio | max diff (1/255) | vs reference p99/max (peeled; "
           "convexified) |")
     print("|---|---:|---:|---:|---:|---|---|---|---:|---:|---|")
+    points = []
     for name in scenes:
         built = ppiray_bench_scenes.build(name, ROOT, DATA_ROOT)
         if built is None:
@@ -95,6 +99,9 @@ def main():
         a = orbit(grid, prop, args.size, args.views, check)
         b = orbit(convex, prop, args.size, args.views, check, a[5])
         diff = max(float(np.abs(x - y).max()) for x, y in zip(a[3], b[3]))
+        if convexify.GetNumberOfImaginaryCells() > 0:
+            points.append((name, a[1], b[0] / a[0],
+                           convexify.GetNumberOfImaginaryCells() / grid.GetNumberOfCells()))
         vs = ("%.2f/%.2f; %.2f/%.2f" % (a[4]["p99"], a[4]["max"], b[4]["p99"], b[4]["max"])
               if args.check else "not checked")
         print("| %s | %d | %.2f | %d | %d | %d, %d | %.1f, %d, %.1f | %.1f, %d, %.1f, %d | %.2f "
@@ -103,6 +110,30 @@ def main():
                   convexify.GetNumberOfSteinerPoints(), convexify.GetNumberOfMergedPoints(),
                   convexify.GetNumberOfDroppedTriangles(), a[0], a[1], a[2] / 1e6, b[0], b[1],
                   b[2] / 1e6, b[6], b[0] / a[0], diff, vs), flush=True)
+
+    if args.plot:
+        plot(points, args.plot, args.size, args.views)
+
+
+def plot(points, path, size, views):
+    """Ratio (log) against peels, one labelled point per scene."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    for name, peels, ratio, imaginary in points:
+        ax.plot(peels, ratio, "o", color="tab:blue" if ratio < 1 else "tab:red")
+        ax.annotate("%s (%.2f)" % (name, imaginary), (peels, ratio), textcoords="offset points",
+                    xytext=(5, 4), fontsize=8)
+    ax.axhline(1.0, color="gray", lw=0.8)
+    ax.set_yscale("log")
+    ax.set_xlabel("peels the mesh needs (largest over the orbit)")
+    ax.set_ylabel("convexified / peeled, ms per frame")
+    ax.set_title("Convexification against depth peeling (%dx%d, %d views, llvmpipe)\n"
+                 "(imaginary cells per mesh cell)" % (size, size, views), fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    print("wrote", path)
 
 
 if __name__ == "__main__":
