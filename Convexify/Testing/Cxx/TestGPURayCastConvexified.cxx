@@ -6,13 +6,15 @@
 // rounding 0.5, float, the 0.1/255 transfer-function tolerance). The
 // reference of the convexified grid (hidden cells left out) is checked too.
 // Scenes: a block with a tunnel beside a second block (the non-convex test's
-// mesh), a cube with a cavity, the benchmark's carved wavelet (graded holes).
+// mesh), a cube with a cavity, two parts across a thin gap, the benchmark's
+// carved wavelet (graded holes).
 
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
 #include "vtkCamera.h"
 #include "vtkObjectFactory.h"
 #include "vtkObjectFactoryCollection.h"
+#include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGridConvexify.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
@@ -148,6 +150,25 @@ int TestGPURayCastConvexified(int, char*[])
     auto grid = ppiray_test::VoxelTetrahedra(
       n, 1.0 / 6, origin, keep, [](double x, double y, double z) { return x + y + z; });
     errors += Compare("cube with a cavity", grid, { 2.2, 1.6, 2.5 }, 0.0, 3.0);
+  }
+  {
+    // Two parts across a thin gap (1e-3 of their size): a 7x3x3 lattice
+    // without its middle slab of voxels, the far part moved back to 1e-3
+    // from the near one.
+    const int n[3] = { 7, 3, 3 };
+    const double origin[3] = { 0, 0, 0 };
+    auto grid = ppiray_test::VoxelTetrahedra(
+      n, 1.0 / 3, origin, [](int i, int, int) { return i != 3; },
+      [](double x, double y, double z) { return x + y + z; });
+    vtkPoints* points = grid->GetPoints();
+    for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+    {
+      double x[3];
+      points->GetPoint(p, x);
+      x[0] -= x[0] > 1.1 ? 1.0 / 3 - 1e-3 : 0.0;
+      points->SetPoint(p, x);
+    }
+    errors += Compare("two parts across a thin gap", grid, { 1.0, 0.35, 0.25 }, 0.0, 4.0);
   }
   {
     vtkNew<vtkXMLUnstructuredGridReader> reader;
