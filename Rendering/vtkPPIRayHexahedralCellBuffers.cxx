@@ -1,5 +1,8 @@
 #include "vtkPPIRayHexahedralCellBuffers.h"
 
+#include "ppirayBoundaryFaceLinks.h"
+#include "vtkCellData.h"
+
 #include "vtkShaderProgram.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
@@ -58,6 +61,14 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
   hexes.BuildGeometry(grid);
   if (hexes.GetNumberOfHexahedra() == 0)
   {
+    return BuildResult::Declined;
+  }
+  if (hexes.GetNumberOfOtherCells() > 0 &&
+      grid->GetCellData()->GetArray(ppiray::BoundaryCellArrayName))
+  {
+    vtkWarningWithObjectMacro(reporter,
+      << "A convexified grid's imaginary cells are tetrahedra: its " << hexes.GetNumberOfHexahedra()
+      << " hexahedra are split into tetrahedra too (rendered with linear pieces, not natively).");
     return BuildResult::Declined;
   }
   if (hexes.GetNumberOfOtherCells() > 0)
