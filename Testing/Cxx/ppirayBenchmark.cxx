@@ -8,7 +8,7 @@
 //
 //   ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]
 //                   [--views N] [--peer-views N] [--inside] [--check N]
-//                   [--transfer-function ramp|realistic] [--breakdown]
+//                   [--transfer-function ramp|realistic|cutoff] [--breakdown]
 //                   [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]
 //
 // --check N: after its frames, each PPIRay mapper renders the last view at
@@ -17,7 +17,8 @@
 // max exceeds 1/255 or a pixel is NaN (the bound of the test suite).
 //
 // --transfer-function realistic: 14 colour and 22 opacity nodes (RealisticFunction);
-// ramp (default): 3 colour nodes, a 2-node opacity ramp.
+// cutoff: its colours, the opacity zero on the lower 45 % of the range
+// (CutoffFunction); ramp (default): 3 colour nodes, a 2-node opacity ramp.
 // --breakdown: a third untimed orbit with the mapper's TimePasses on prints
 // the GPU milliseconds per kind of pass and frame, and the CPU preparation.
 //
@@ -111,6 +112,25 @@ void RealisticFunction(
     const double x = i / 21.0;
     const double hump = 0.5 - 0.5 * std::cos(6.0 * pi * x);
     opacity->AddPoint(lo + (hi - lo) * x, 0.02 + 0.48 * x * hump * hump);
+  }
+}
+
+// The realistic function's colours with the low values hidden, as users
+// clear a background: opacity zero on the lower 45 % of [lo, hi], above it
+// 16 nodes of humps rising from zero.
+void CutoffFunction(
+  double lo, double hi, vtkColorTransferFunction* color, vtkPiecewiseFunction* opacity)
+{
+  RealisticFunction(lo, hi, color, opacity);
+  opacity->RemoveAllPoints();
+  const double pi = 3.14159265358979323846;
+  const double cut = 0.45;
+  opacity->AddPoint(lo, 0.0);
+  for (int i = 0; i < 16; ++i)
+  {
+    const double u = i / 15.0;
+    const double hump = 0.5 - 0.5 * std::cos(6.0 * pi * u);
+    opacity->AddPoint(lo + (hi - lo) * (cut + (1.0 - cut) * u), 0.5 * u * hump * hump);
   }
 }
 
@@ -276,6 +296,10 @@ std::vector<Row> Measure(const std::string& name, vtkUnstructuredGridVolumeMappe
   {
     RealisticFunction(range[0], range[1], color, opacity);
   }
+  else if (o.TransferFunction == "cutoff")
+  {
+    CutoffFunction(range[0], range[1], color, opacity);
+  }
   else
   {
     color->AddRGBPoint(range[0], 0.23, 0.30, 0.75);
@@ -383,9 +407,10 @@ int main(int argc, char* argv[])
     else if (arg == "--transfer-function")
     {
       o.TransferFunction = next();
-      if (o.TransferFunction != "ramp" && o.TransferFunction != "realistic")
+      if (o.TransferFunction != "ramp" && o.TransferFunction != "realistic" &&
+          o.TransferFunction != "cutoff")
       {
-        std::cerr << "--transfer-function: ramp or realistic\n";
+        std::cerr << "--transfer-function: ramp, realistic or cutoff\n";
         return 2;
       }
     }
@@ -398,7 +423,7 @@ int main(int argc, char* argv[])
       std::cout
         << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]"
            " [--views N] [--peer-views N] [--inside] [--check N]"
-           " [--transfer-function ramp|realistic] [--breakdown]"
+           " [--transfer-function ramp|realistic|cutoff] [--breakdown]"
            " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]\n\n"
            "Frame time of PPIRay against VTK's unstructured volume mappers on one scene, same\n"
            "run: median ms per frame over an orbit of views after a warm-up frame.\n"
@@ -414,7 +439,8 @@ int main(int argc, char* argv[])
            "  --check N           PPIRay's last view at NxN against the CPU reference; exit 1\n"
            "                      past 1/255 (p99 or max) or with NaN\n"
            "  --transfer-function ramp (default: 3 colour nodes, 2-node opacity ramp) or\n"
-           "                      realistic (14 colour and 22 opacity nodes, smooth)\n"
+           "                      realistic (14 colour and 22 opacity nodes, smooth) or\n"
+           "                      cutoff (realistic colours, opacity zero on the lower 45 %)\n"
            "  --breakdown         GPU time per kind of pass (a third, untimed orbit)\n"
            "  --mappers LIST      comma-separated (default ppiray,pt,raycast): ppiray (partial\n"
            "                      pre-integration), ppiray-exact, ppiray-full, ppiray-average,\n"
