@@ -243,17 +243,23 @@ bool vtkTransferFunctionControlPoints::Build(vtkVolumeProperty* property, int co
     self(self, xm, inside[4], x1, b);
   };
 
-  // Each node as its left and, where the function jumps, its right limit;
+  // Each node as its value or, where the function jumps, as its left and
+  // right limits (a limit taken a rounding step off the node is not exactly
+  // the value there: beside a zero-opacity stretch it is not zero);
   // between nodes, the refined segment. Outside, constant extension of the
   // first and last points.
   std::vector<Sample> limits = tf.Limits(nodes[0]);
   for (size_t i = 0; i < nodes.size(); ++i)
   {
     const double x = nodes[i];
-    add(x, limits[0]);
     if (MaxDifference(limits[0], limits[1]) > 0.5 * tolerance)
     {
+      add(x, limits[0]);
       add(x, limits[1]);
+    }
+    else
+    {
+      add(x, tf.Evaluate(x, x, 2)[0]);
     }
     if (i + 1 < nodes.size())
     {
@@ -293,7 +299,9 @@ bool vtkTransferFunctionControlPoints::Build(vtkVolumeProperty* property, int co
 std::vector<float> vtkTransferFunctionControlPoints::GetTexels(double shift) const
 {
   // Interval k = -1 .. n - 1 at texels 3 (k + 1) .. 3 (k + 1) + 2:
-  //   (r, g, b, tau) at s_k,  d(r, g, b, tau) / ds,  (s_k, s_k+1, 0, 0),
+  //   (r, g, b, tau) at s_k,  d(r, g, b, tau) / ds,  (s_k, s_k+1, a, b),
+  // [a, b] the transparent run k lies in (tau = 0 on all of it; a > b if
+  // tau is not zero on k),
   // so that on [s_k, s_k+1]  f(s) = f(s_k) + f'(s) (s - s_k). The slope is
   // taken over the ends as the shader has them (rounded to float), so f
   // reaches f(s_k+1) at the rounded s_k+1; zero where they round to one value.
@@ -321,8 +329,37 @@ std::vector<float> vtkTransferFunctionControlPoints::GetTexels(double shift) con
     }
     t[8] = sLo;
     t[9] = sHi;
+    t[10] = infinity; // not transparent: an empty run, filled below
+    t[11] = -infinity;
+  }
+  for (size_t first = 0; first <= n;)
+  {
+    size_t end = first;
+    while (end <= n && this->IsTransparentInterval(static_cast<int>(end) - 1))
+    {
+      ++end;
+    }
+    for (size_t interval = first; interval < end; ++interval)
+    {
+      texels[12 * interval + 10] = texels[12 * first + 8];
+      texels[12 * interval + 11] = texels[12 * (end - 1) + 9];
+    }
+    first = end == first ? first + 1 : end;
   }
   return texels;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransferFunctionControlPoints::IsTransparentInterval(int k) const
+{
+  const int n = static_cast<int>(this->Values.size());
+  if (n == 0 || k < -1 || k >= n)
+  {
+    return false;
+  }
+  const int lo = std::max(k, 0);
+  const int hi = std::min(k + 1, n - 1);
+  return this->ColorAttenuation[4 * lo + 3] == 0.0 && this->ColorAttenuation[4 * hi + 3] == 0.0;
 }
 
 //------------------------------------------------------------------------------

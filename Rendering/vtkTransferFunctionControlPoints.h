@@ -87,11 +87,21 @@ public:
    * The layout the march shader reads (transfer_function_fs.glsl): three
    * RGBA32F texels per control interval k = -1 .. n - 1 (below the first
    * point, between points, from the last point on): (r, g, b, tau) at its
-   * low end, their derivative in s, and (s_k - shift, s_k+1 - shift, 0, 0)
+   * low end, their derivative in s, and (s_k - shift, s_k+1 - shift, a, b)
    * with -+3e38 past the first and last point; the scalar stored relative to
    * `shift` as the field is. Constant outside the points and across a jump.
+   * [a, b] is the transparent run k belongs to: the span of the longest chain
+   * of consecutive transparent intervals containing k (IsTransparentInterval),
+   * so that a segment whose scalar stays in it contributes nothing and is not
+   * integrated; a = 3e38, b = -3e38 (empty) where k is not transparent.
    */
   std::vector<float> GetTexels(double shift = 0.0) const;
+
+  /**
+   * Whether tau is zero on all of control interval k (-1 .. n - 1): zero at
+   * both its ends (tau is linear between them, constant outside the points).
+   */
+  bool IsTransparentInterval(int k) const;
 
 protected:
   vtkTransferFunctionControlPoints() = default;

@@ -44,12 +44,16 @@ void integrateCubicPiece(vec4 w, float xA, float xB, float sA, float sB, vec4 tf
 }
 
 // One monotonic piece [xA, x1] of the cubic (sA to s1), split at every
-// control point it crosses.
+// control point it crosses; not integrated where transparent (transparentSpan).
 int integrateMonotonicPiece(vec4 w, float xA, float x1, float sA, float s1, int k,
   inout vec4 color)
 {
   int n = numberOfControlPoints;
   k = controlInterval(sA, k);
+  if (transparentSpan(sA, s1, k))
+  {
+    return k;
+  }
   float ds = s1 - sA;
   vec4 tfA = transferFunction(sA, k);
   for (int i = 0; i <= n && spendLoops(CUBIC_PIECE_LOOPS); ++i)

@@ -6,10 +6,17 @@
 // (nextControlCrossing), each piece integrated by integratePiece(). Returns
 // the control interval at sBack. Out of loops (PIECE_LOOPS a piece): stops at
 // a control point, cutAt that far along the segment, returning its interval.
+// A transparent segment (transparentSpan) is not split nor integrated: it
+// returns the interval at sFront, from which the next segment's
+// controlInterval() walks.
 int integrateSegment(float sFront, float sBack, float len, int k, inout vec4 color)
 {
   int n = numberOfControlPoints;
   k = controlInterval(sFront, k);
+  if (transparentSpan(sFront, sBack, k))
+  {
+    return k;
+  }
   float ds = sBack - sFront;
   float sA = sFront;
   vec4 tfA = transferFunction(sA, k);

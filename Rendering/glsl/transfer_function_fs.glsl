@@ -2,7 +2,9 @@
 // between control points s_0 <= ... <= s_n-1, constant outside. Three texels
 // per control interval k = -1 .. n - 1 (vtkTransferFunctionControlPoints::
 // GetTexels): f(s_k) = (r, g, b, tau), its slope f' in s, and the ends
-// (s_k, s_k+1) (-+INFINITY past the first and last point), so that
+// (s_k, s_k+1) (-+INFINITY past the first and last point) with the transparent
+// run [a, b] around k (tau = 0 on all of it; empty, a > b, where tau is not
+// zero on k), so that
 //   f(s) = f(s_k) + f' (s - s_k),  s in [s_k, s_k+1].
 uniform samplerBuffer controlPoints;
 uniform int numberOfControlPoints;
@@ -16,6 +18,16 @@ vec4 intervalTexel(int k, int i)
 vec2 intervalEnds(int k)
 {
   return intervalTexel(k, 2).xy;
+}
+
+// Whether tau = 0 on all of the scalar span between sA and sB, sA in control
+// interval k: then a segment on which s stays in the span emits and absorbs
+// nothing (zeta = 1, I = 0) and is not integrated. The ends texel is the one
+// the interval lookup has just read.
+bool transparentSpan(float sA, float sB, int k)
+{
+  vec2 run = intervalTexel(k, 2).zw;
+  return min(sA, sB) >= run.x && max(sA, sB) <= run.y;
 }
 
 // (r, g, b, tau) of the transfer function at scalar s, with s in the control

@@ -6,6 +6,10 @@
 // rays that ran out in further passes (march_common_fs.glsl); each image
 // must equal the CPU reference, and the exact-linear and native hexahedron
 // modes (many loop iterations per piece) must have needed continuations.
+// With the opacity zero below 0.7 over a field s = x, the colour nodes are
+// crossed inside one transparent run by cell segments that lie in it whole
+// and are not integrated (transparentSpan): those images need no
+// continuation at all.
 
 #include "PPIRayImageCompare.h"
 #include "PPIRayReferenceImage.h"
@@ -38,27 +42,35 @@ double Hashed(int i, int c)
   return v - std::floor(v);
 }
 
-// 2,000 random RGB colour nodes and 2,000 low opacity nodes on [0, 1].
-void ManyNodes(vtkVolumeProperty* property)
+// 2,000 random RGB colour nodes and 2,000 low opacity nodes on [0, 1]; with
+// `transparentBelow` > 0, the colour nodes on [0, transparentBelow] with
+// opacity zero there, and above it an opacity ramp from 0 to 1 (few control
+// points).
+void ManyNodes(vtkVolumeProperty* property, double transparentBelow)
 {
   vtkNew<vtkColorTransferFunction> color;
   vtkNew<vtkPiecewiseFunction> opacity;
   for (int i = 0; i < 2000; ++i)
   {
-    const double x = i / 1999.0;
+    const double x = transparentBelow * i / 1999.0 + (transparentBelow > 0 ? 0.0 : i / 1999.0);
     color->AddRGBPoint(x, Hashed(i, 0), Hashed(i, 1), Hashed(i, 2));
-    opacity->AddPoint(x, 0.2 * Hashed(i, 3));
+    opacity->AddPoint(x, transparentBelow > 0 ? 0.0 : 0.2 * Hashed(i, 3));
+  }
+  if (transparentBelow > 0)
+  {
+    opacity->AddPoint(1.0, 1.0);
   }
   property->SetColor(color);
   property->SetScalarOpacity(opacity);
   property->SetScalarOpacityUnitDistance(0.5);
 }
 
+// continuations: 1 the image must have needed some, -1 none, 0 either.
 int Check(const std::string& name, vtkUnstructuredGrid* grid,
-  vtkUnstructuredGridGPURayCastMapper* mapper, bool needsContinuations)
+  vtkUnstructuredGridGPURayCastMapper* mapper, double transparentBelow, int continuations)
 {
   ppiray_test::Scene scene(Size, Size);
-  ManyNodes(scene.Property);
+  ManyNodes(scene.Property, transparentBelow);
   scene.Show(mapper, grid, { 1.6, 1.3, 2.2 }, { 0.5, 0.5, 0.5 });
   scene.Window->Render();
   const auto image = ppiray_test::ReadRGB(scene.Window);
@@ -97,9 +109,15 @@ int Check(const std::string& name, vtkUnstructuredGrid* grid,
     std::cerr << name << ": only " << covered << " pixels covered\n";
     ++errors;
   }
-  if (needsContinuations && mapper->GetNumberOfContinuations() == 0)
+  if (continuations > 0 && mapper->GetNumberOfContinuations() == 0)
   {
     std::cerr << name << ": no continuation pass; the scene no longer exceeds the budget\n";
+    ++errors;
+  }
+  if (continuations < 0 && mapper->GetNumberOfContinuations() > 0)
+  {
+    std::cerr << name << ": " << mapper->GetNumberOfContinuations()
+              << " continuation passes; transparent spans were split at control points\n";
     ++errors;
   }
   return errors;
@@ -116,12 +134,22 @@ int TestGPURayCastLoopBudget(int, char*[])
 
   int errors = 0;
   vtkNew<vtkUnstructuredGridGPURayCastMapper> ppi;
-  errors += Check("tetrahedra, partial pre-integration", tetrahedra, ppi, false);
+  errors += Check("tetrahedra, partial pre-integration", tetrahedra, ppi, 0.0, 0);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> exact;
   exact->SetIntegrationModeToExactLinear();
-  errors += Check("tetrahedra, exact linear", tetrahedra, exact, true);
+  errors += Check("tetrahedra, exact linear", tetrahedra, exact, 0.0, 1);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> accurate;
   accurate->SetHexahedronMode(vtkUnstructuredGridGPURayCastMapper::HEXAHEDRON_ACCURATE);
-  errors += Check("native hexahedra, accurate", hexahedra, accurate, true);
+  errors += Check("native hexahedra, accurate", hexahedra, accurate, 0.0, 1);
+  // s = x: each cell's segment spans 1/16 of the range, about 180 colour
+  // nodes, and the cells below 0.7 are transparent whole.
+  auto ramp = [](double x, double, double) { return x; };
+  auto rampTetrahedra = ppiray_test::VoxelTetrahedra(
+    n, 1.0 / 16, origin, [](int, int, int) { return true; }, ramp);
+  auto rampHexahedra = ppiray_test::FieldVoxelBlock(16, ramp, "s").Hexahedra;
+  errors +=
+    Check("tetrahedra, exact linear, s = x, transparent below 0.7", rampTetrahedra, exact, 0.7, -1);
+  errors += Check(
+    "native hexahedra, accurate, s = x, transparent below 0.7", rampHexahedra, accurate, 0.7, -1);
   return errors == 0 ? 0 : 1;
 }

@@ -6,7 +6,9 @@
 // every node a control point; jumps (where VTK's evaluation has them: a
 // sharpness of 1 is a step in VTK 9.2, a steep curve in 9.6) kept as two
 // points at one scalar;
-// attenuation opacity / unit distance.
+// attenuation opacity / unit distance; the transparent runs of the texels
+// (zero opacity on all of each, none left out, none longer) against VTK's
+// opacity function.
 
 #include "vtkColorTransferFunction.h"
 #include "vtkDiscretizableColorTransferFunction.h"
@@ -209,6 +211,86 @@ int Check(const Case& test, vtkColorTransferFunction* color)
 }
 }
 
+// The transparent runs GetTexels stores with each control interval, checked
+// against VTK's own opacity: zero at 1,000 samples across each run, not zero
+// just past a finite end (a run is as long as it can be), and every interval
+// whose samples are all zero inside a run.
+int CheckTransparentRuns()
+{
+  vtkNew<vtkColorTransferFunction> color;
+  for (double s : { 0.0, 10.0, 20.0, 45.0, 80.0, 90.0, 100.0 })
+  {
+    color->AddRGBPoint(s, s / 100.0, 0.5, 1.0 - s / 100.0);
+  }
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(30.0, 0.0);
+  opacity->AddPoint(50.0, 0.5);
+  opacity->AddPoint(55.0, 0.0);
+  opacity->AddPoint(58.0, 0.0);
+  opacity->AddPoint(60.0, 0.4);
+  opacity->AddPoint(70.0, 0.0);
+  opacity->AddPoint(100.0, 0.0);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  vtkNew<vtkTransferFunctionControlPoints> cp;
+  cp->Build(property);
+  const std::vector<float> texels = cp->GetTexels();
+  const int n = cp->GetNumberOfControlPoints();
+  int errors = 0;
+  int runs = 0;
+  for (int k = -1; k < n; ++k)
+  {
+    const float* t = &texels[12 * (k + 1)];
+    const double lo = std::max<double>(t[8], -1000.0);
+    const double hi = std::min<double>(t[9], 1000.0);
+    bool zero = true;
+    for (int i = 0; i <= 1000; ++i)
+    {
+      zero = zero && opacity->GetValue(lo + (hi - lo) * i / 1000.0) == 0.0;
+    }
+    const bool inRun = t[10] <= t[8] && t[9] <= t[11];
+    if (zero != inRun || zero != cp->IsTransparentInterval(k) || (!inRun && t[10] <= t[11]))
+    {
+      std::printf("FAILED: interval %d [%g, %g]: VTK's opacity %s zero, run [%g, %g]\n", k, lo, hi,
+        zero ? "all" : "not all", t[10], t[11]);
+      ++errors;
+    }
+    if (!inRun || (k >= 0 && texels[12 * k + 11] == t[11]))
+    {
+      continue; // the run was checked at its first interval
+    }
+    ++runs;
+    const double a = std::max<double>(t[10], -1000.0);
+    const double b = std::min<double>(t[11], 1000.0);
+    for (int i = 0; i <= 1000; ++i)
+    {
+      if (opacity->GetValue(a + (b - a) * i / 1000.0) != 0.0)
+      {
+        std::printf("FAILED: run [%g, %g] not transparent at %g\n", a, b, a + (b - a) * i / 1000.0);
+        ++errors;
+        break;
+      }
+    }
+    for (double end : { double(t[10]) - 0.01, double(t[11]) + 0.01 })
+    {
+      if (std::abs(end) < 1000.0 && opacity->GetValue(end) == 0.0)
+      {
+        std::printf("FAILED: run [%g, %g] stops short of %g\n", t[10], t[11], end);
+        ++errors;
+      }
+    }
+  }
+  // [-inf, 30], [55, 58], [70, inf], each across several colour nodes.
+  if (runs != 3)
+  {
+    std::printf("FAILED: %d transparent runs, expected 3\n", runs);
+    ++errors;
+  }
+  return errors;
+}
+
 int TestTransferFunctionControlPoints(int, char*[])
 {
   std::vector<Case> cases;
@@ -309,7 +391,7 @@ int TestTransferFunctionControlPoints(int, char*[])
     },
     1 });
 
-  int errors = 0;
+  int errors = CheckTransparentRuns();
   for (const Case& test : cases)
   {
     vtkNew<vtkColorTransferFunction> color;
