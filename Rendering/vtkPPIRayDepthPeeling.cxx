@@ -551,6 +551,7 @@ long long vtkPPIRayDepthPeeling::FinishedRaySteps(const Frame& frame)
 void vtkPPIRayDepthPeeling::SetRayUniforms(vtkShaderProgram* program, const Frame& frame)
 {
   program->SetUniformMatrix4x4("clipToLocal", const_cast<float*>(frame.ClipToLocal));
+  program->SetUniformMatrix3x3("ndcToDirection", const_cast<float*>(frame.NdcToDirection));
   float planes[6][4] = {};
   const size_t count =
     frame.ClippingPlanes ? std::min<size_t>(frame.ClippingPlanes->size() / 4, 6) : 0;

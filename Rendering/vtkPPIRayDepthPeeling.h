@@ -49,9 +49,10 @@ public:
     // The resolution the rays are cast at (the viewport's divided by the
     // image sample distance); the composite pass scales it up bilinearly.
     int TargetWidth, TargetHeight;
-    float LocalToClip[16];  // column-major: the mesh's local frame to clip space
-    float ClipToLocal[16];  // and back
-    float TerminationAlpha; // a pixel this opaque takes no more peels
+    float LocalToClip[16];   // column-major: the mesh's local frame to clip space
+    float ClipToLocal[16];   // and back
+    float NdcToDirection[9]; // column-major: D, the ray direction D (x, y, 1) at NDC (x, y)
+    float TerminationAlpha;  // a pixel this opaque takes no more peels
     int MaximumPeels;
     // The sections of the cells the near plane cuts (PlaneSection(): x, y,
     // z, cell per vertex), or null: the first march starts there.

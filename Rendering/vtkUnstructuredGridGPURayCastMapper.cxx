@@ -153,21 +153,48 @@ bool FiniteCoordinates(vtkPoints* points)
   return true;
 }
 
+// The point at normalized device coordinates (x, y, z) in the frame
+// `clipToLocal` maps clip space to.
+glm::dvec3 Unproject(vtkMatrix4x4* clipToLocal, double x, double y, double z)
+{
+  const double clip[4] = { x, y, z, 1.0 };
+  double local[4];
+  clipToLocal->MultiplyPoint(clip, local);
+  return glm::dvec3(local[0], local[1], local[2]) / local[3];
+}
+
 // The near plane (n, d), n . x = d, n unit and towards the far plane, in
 // the frame `clipToLocal` maps clip space to.
 glm::dvec4 NearPlane(vtkMatrix4x4* clipToLocal)
 {
-  auto unproject = [clipToLocal](double x, double y, double z)
-  {
-    const double clip[4] = { x, y, z, 1.0 };
-    double local[4];
-    clipToLocal->MultiplyPoint(clip, local);
-    return glm::dvec3(local[0], local[1], local[2]) / local[3];
-  };
-  const glm::dvec3 a = unproject(-1, -1, -1);
-  glm::dvec3 n = glm::normalize(glm::cross(unproject(1, -1, -1) - a, unproject(-1, 1, -1) - a));
-  n = glm::dot(n, unproject(0, 0, 1) - a) < 0 ? -n : n;
+  const glm::dvec3 a = Unproject(clipToLocal, -1, -1, -1);
+  glm::dvec3 n = glm::normalize(
+    glm::cross(Unproject(clipToLocal, 1, -1, -1) - a, Unproject(clipToLocal, -1, 1, -1) - a));
+  n = glm::dot(n, Unproject(clipToLocal, 0, 0, 1) - a) < 0 ? -n : n;
   return glm::dvec4(n, glm::dot(n, a));
+}
+
+// The viewing ray's direction through the pixel at NDC (x, y),
+//   d(x, y) = far(x, y) - near(x, y) = D (x, y, 1),
+// is affine in (x, y) for perspective and parallel projections alike (eye
+// space: (f - n) ((x + P02) / P00, (y + P12) / P11, -1), or (0, 0, n - f)):
+// D, column-major, from d at three pixels, in double. In float the far
+// point's w is a difference of two terms of about 1 / (2 n) that cancel to
+// 1 / f, and with the near plane 1e-4 of the far one (a camera inside a
+// mesh) the direction is 1e-4 rad off.
+void NdcToDirection(vtkMatrix4x4* clipToLocal, float out[9])
+{
+  auto direction = [clipToLocal](double x, double y)
+  { return Unproject(clipToLocal, x, y, 1) - Unproject(clipToLocal, x, y, -1); };
+  const glm::dvec3 d0 = direction(0, 0);
+  const glm::dvec3 columns[3] = { direction(1, 0) - d0, direction(0, 1) - d0, d0 };
+  for (int c = 0; c < 3; ++c)
+  {
+    for (int r = 0; r < 3; ++r)
+    {
+      out[3 * c + r] = static_cast<float>(columns[c][r]);
+    }
+  }
 }
 
 // The uniforms of the average-intensity and additive projections
@@ -703,6 +730,7 @@ void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolum
   vtkMatrix4x4::Invert(localToClip, clipToLocal);
   ColumnMajor(localToClip, frame.LocalToClip);
   ColumnMajor(clipToLocal, frame.ClipToLocal);
+  NdcToDirection(clipToLocal, frame.NdcToDirection);
   // A projection's colour is that of its last extreme: no early stop.
   frame.TerminationAlpha = projection ? 2.0f : static_cast<float>(this->TerminationOpacity);
   frame.MaximumPeels = this->MaximumNumberOfPeels;

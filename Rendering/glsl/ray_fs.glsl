@@ -1,14 +1,17 @@
-// The viewing ray through a pixel, in the mesh's local frame: the pixel's
-// points on the near and far planes, unprojected. Works for perspective and
-// parallel cameras alike.
+// The viewing ray through a pixel, in the mesh's local frame: from the
+// pixel's point on the near plane, unprojected, along d = D (x, y, 1), the
+// far point minus the near one, affine in the pixel's NDC (x, y) and made in
+// double (NdcToDirection in vtkUnstructuredGridGPURayCastMapper.cxx: the far
+// point unprojected in float loses its digits when the near plane is close).
+// Perspective and parallel cameras alike.
 uniform mat4 clipToLocal;
+uniform mat3 ndcToDirection;
 
 void pixelRay(vec2 ndc, out vec3 origin, out vec3 direction)
 {
   vec4 nearPoint = clipToLocal * vec4(ndc, -1.0, 1.0);
-  vec4 farPoint = clipToLocal * vec4(ndc, 1.0, 1.0);
   origin = nearPoint.xyz / nearPoint.w;
-  direction = normalize(farPoint.xyz / farPoint.w - origin);
+  direction = normalize(ndcToDirection * vec3(ndc, 1.0));
 }
 
 // Ray parameter where opaque geometry (VTK's depth buffer, copied to `depth`)

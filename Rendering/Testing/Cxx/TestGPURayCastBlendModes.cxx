@@ -11,7 +11,12 @@
 // by quadrature), the camera outside and inside the mesh; the average and
 // additive scenes with an opacity that rises and falls across the range
 // (control points crossed inside cells), the average one also over a part
-// of the range only (rays that meet none of it draw nothing).
+// of the range only (rays that meet none of it draw nothing); a maximum
+// projection of cell scalars (a value per cell: the image is discontinuous
+// wherever a ray passes a cell edge) from inside the mesh with the near
+// plane 1e-4 of the far one, where the rays' directions must be made in
+// double (in float their far points lose the digits: 1e-4 rad off, the
+// neighbouring cell's value at pixels whose rays pass near an edge).
 //
 // Each scene against the reference renderer in the same blend mode (its own
 // integral: 3-point Gauss-Legendre over its transfer-function pieces, the
@@ -32,12 +37,15 @@
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
 #include "vtkCamera.h"
+#include "vtkCellData.h"
+#include "vtkFloatArray.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <iostream>
 #include <string>
 
@@ -120,7 +128,9 @@ struct BlendScene
   bool Hexahedra;
   int Blend;
   bool Inside;
-  double AverageRange[2]; // fractions of the scalar range (average only)
+  double AverageRange[2];   // fractions of the scalar range (average only)
+  bool CellScalars = false; // a hashed value per cell instead of the blob
+  double Near = 0.01;       // the near plane's distance when inside (far: 3)
 };
 
 // Opacity rising and falling across [lo, hi] (control points inside the
@@ -145,6 +155,18 @@ int TestGPURayCastBlendModes(int argc, char* argv[])
   auto keep = [](int, int j, int k) { return !(j >= 5 && j < 7 && k >= 3 && k < 5); };
   auto tetrahedra = ppiray_test::VoxelTetrahedra(n, 1.0 / 8, origin, keep, ppiray_test::Blob);
   auto hexahedra = ppiray_test::BlobVoxelBlock(8).Hexahedra;
+  // The tetrahedra with a value per cell in [0, 1), hashed from its id.
+  vtkNew<vtkUnstructuredGrid> cellTetrahedra;
+  cellTetrahedra->ShallowCopy(tetrahedra);
+  cellTetrahedra->GetPointData()->Initialize();
+  vtkNew<vtkFloatArray> cellValues;
+  cellValues->SetName("hashed");
+  for (vtkIdType c = 0; c < cellTetrahedra->GetNumberOfCells(); ++c)
+  {
+    const double v = std::sin(12.9898 * c) * 43758.5453;
+    cellValues->InsertNextValue(static_cast<float>(v - std::floor(v)));
+  }
+  cellTetrahedra->GetCellData()->SetScalars(cellValues);
 
   using Mapper = vtkUnstructuredGridGPURayCastMapper;
   const BlendScene scenes[] = {
@@ -159,14 +181,20 @@ int TestGPURayCastBlendModes(int argc, char* argv[])
     { "TetrahedraAdditiveInside", false, Mapper::ADDITIVE_BLEND, true, { 0, 1 } },
     { "HexahedraAverageRange", true, Mapper::AVERAGE_INTENSITY_BLEND, false, { 0.55, 0.8 } },
     { "HexahedraAdditive", true, Mapper::ADDITIVE_BLEND, false, { 0, 1 } },
+    { "TetrahedraCellMaximumNearPlane", false, Mapper::MAXIMUM_INTENSITY_BLEND, true, { 0, 1 },
+      true, 3e-4 },
   };
   int errors = 0;
   for (const BlendScene& blend : scenes)
   {
-    vtkUnstructuredGrid* grid = blend.Hexahedra ? hexahedra.Get() : tetrahedra.Get();
+    vtkUnstructuredGrid* grid = blend.CellScalars ? cellTetrahedra.Get()
+                                : blend.Hexahedra ? hexahedra.Get()
+                                                  : tetrahedra.Get();
     ppiray_test::Scene scene(Size, Size);
     double range[2];
-    grid->GetPointData()->GetScalars()->GetRange(range);
+    vtkDataArray* scalars =
+      blend.CellScalars ? grid->GetCellData()->GetScalars() : grid->GetPointData()->GetScalars();
+    scalars->GetRange(range);
     const double averageRange[2] = { range[0] + blend.AverageRange[0] * (range[1] - range[0]),
       range[0] + blend.AverageRange[1] * (range[1] - range[0]) };
     if (blend.Blend <= Mapper::MINIMUM_INTENSITY_BLEND)
@@ -195,7 +223,7 @@ int TestGPURayCastBlendModes(int argc, char* argv[])
       camera->SetFocalPoint(0.5, 1.0, 0.55);
       camera->SetViewUp(0.0, 0.0, 1.0);
       camera->SetViewAngle(70.0);
-      camera->SetClippingRange(0.01, 3.0);
+      camera->SetClippingRange(blend.Near, 3.0);
     }
     scene.Window->Render();
     const auto image = ppiray_test::ReadRGB(scene.Window);
