@@ -180,8 +180,8 @@ glm::dvec4 NearPlane(vtkMatrix4x4* clipToLocal)
 // space: (f - n) ((x + P02) / P00, (y + P12) / P11, -1), or (0, 0, n - f)):
 // D, column-major, from d at three pixels, in double. In float the far
 // point's w is a difference of two terms of about 1 / (2 n) that cancel to
-// 1 / f, and with the near plane 1e-4 of the far one (a camera inside a
-// mesh) the direction is 1e-4 rad off.
+// 1 / f: with the near plane 1e-4 of the far one (a camera inside a mesh)
+// a ray passed cell edges on the wrong side.
 void NdcToDirection(vtkMatrix4x4* clipToLocal, float out[9])
 {
   auto direction = [clipToLocal](double x, double y)
