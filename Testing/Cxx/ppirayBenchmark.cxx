@@ -8,7 +8,7 @@
 //
 //   ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]
 //                   [--views N] [--peer-views N] [--inside] [--check N]
-//                   [--transfer-function ramp|realistic|cutoff] [--breakdown]
+//                   [--transfer-function ramp|realistic|cutoff|detailed] [--breakdown]
 //                   [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]
 //
 // --check N: after its frames, each PPIRay mapper renders the last view at
@@ -18,7 +18,9 @@
 //
 // --transfer-function realistic: 14 colour and 22 opacity nodes (RealisticFunction);
 // cutoff: its colours, the opacity zero on the lower 45 % of the range
-// (CutoffFunction); ramp (default): 3 colour nodes, a 2-node opacity ramp.
+// (CutoffFunction); detailed: 128 colour and 127 opacity nodes, 255 control
+// points (DetailedFunction); ramp (default): 3 colour nodes, a 2-node opacity
+// ramp.
 // --breakdown: a third untimed orbit with the mapper's TimePasses on prints
 // the GPU milliseconds per kind of pass and frame, and the CPU preparation.
 //
@@ -131,6 +133,28 @@ void CutoffFunction(
     const double u = i / 15.0;
     const double hump = 0.5 - 0.5 * std::cos(6.0 * pi * u);
     opacity->AddPoint(lo + (hi - lo) * (cut + (1.0 - cut) * u), 0.5 * u * hump * hump);
+  }
+}
+
+// A detailed function: 128 colour nodes (three turns of a smooth hue
+// cycle) and 127 opacity nodes between them (five humps rising with the
+// scalar), 255 control points in all, no spikes.
+void DetailedFunction(
+  double lo, double hi, vtkColorTransferFunction* color, vtkPiecewiseFunction* opacity)
+{
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < 128; ++i)
+  {
+    const double x = i / 127.0;
+    color->AddRGBPoint(lo + (hi - lo) * x, 0.5 + 0.5 * std::sin(6.0 * pi * x),
+      0.5 + 0.5 * std::sin(6.0 * pi * x + 2.0 * pi / 3.0),
+      0.5 + 0.5 * std::sin(6.0 * pi * x + 4.0 * pi / 3.0));
+  }
+  for (int i = 0; i < 127; ++i)
+  {
+    const double x = (i + 0.5) / 127.0;
+    const double hump = 0.5 - 0.5 * std::cos(10.0 * pi * x);
+    opacity->AddPoint(lo + (hi - lo) * x, 0.02 + 0.48 * x * hump * hump);
   }
 }
 
@@ -300,6 +324,10 @@ std::vector<Row> Measure(const std::string& name, vtkUnstructuredGridVolumeMappe
   {
     CutoffFunction(range[0], range[1], color, opacity);
   }
+  else if (o.TransferFunction == "detailed")
+  {
+    DetailedFunction(range[0], range[1], color, opacity);
+  }
   else
   {
     color->AddRGBPoint(range[0], 0.23, 0.30, 0.75);
@@ -408,9 +436,9 @@ int main(int argc, char* argv[])
     {
       o.TransferFunction = next();
       if (o.TransferFunction != "ramp" && o.TransferFunction != "realistic" &&
-          o.TransferFunction != "cutoff")
+          o.TransferFunction != "cutoff" && o.TransferFunction != "detailed")
       {
-        std::cerr << "--transfer-function: ramp, realistic or cutoff\n";
+        std::cerr << "--transfer-function: ramp, realistic, cutoff or detailed\n";
         return 2;
       }
     }
@@ -423,7 +451,7 @@ int main(int argc, char* argv[])
       std::cout
         << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]"
            " [--views N] [--peer-views N] [--inside] [--check N]"
-           " [--transfer-function ramp|realistic|cutoff] [--breakdown]"
+           " [--transfer-function ramp|realistic|cutoff|detailed] [--breakdown]"
            " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]\n\n"
            "Frame time of PPIRay against VTK's unstructured volume mappers on one scene, same\n"
            "run: median ms per frame over an orbit of views after a warm-up frame.\n"
@@ -439,8 +467,9 @@ int main(int argc, char* argv[])
            "  --check N           PPIRay's last view at NxN against the CPU reference; exit 1\n"
            "                      past 1/255 (p99 or max) or with NaN\n"
            "  --transfer-function ramp (default: 3 colour nodes, 2-node opacity ramp) or\n"
-           "                      realistic (14 colour and 22 opacity nodes, smooth) or\n"
+           "                      realistic (14 colour and 22 opacity nodes, smooth),\n"
            "                      cutoff (realistic colours, opacity zero on the lower 45 %)\n"
+           "                      or detailed (128 colour and 127 opacity nodes)\n"
            "  --breakdown         GPU time per kind of pass (a third, untimed orbit)\n"
            "  --mappers LIST      comma-separated (default ppiray,pt,raycast): ppiray (partial\n"
            "                      pre-integration), ppiray-exact, ppiray-full, ppiray-average,\n"
