@@ -15,8 +15,8 @@
 // projection of cell scalars (a value per cell: the image is discontinuous
 // wherever a ray passes a cell edge) from inside the mesh with the near
 // plane 1e-4 of the far one, where the rays' directions must be made in
-// double (in float their far points lose the digits: 1e-4 rad off, the
-// neighbouring cell's value at pixels whose rays pass near an edge).
+// double (in float their far points lose the digits: at pixels whose rays
+// pass near a cell edge, the neighbouring cell's value).
 //
 // Each scene against the reference renderer in the same blend mode (its own
 // integral: 3-point Gauss-Legendre over its transfer-function pieces, the

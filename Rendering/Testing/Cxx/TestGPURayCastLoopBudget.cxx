@@ -52,7 +52,7 @@ void ManyNodes(vtkVolumeProperty* property, double transparentBelow)
   vtkNew<vtkPiecewiseFunction> opacity;
   for (int i = 0; i < 2000; ++i)
   {
-    const double x = transparentBelow * i / 1999.0 + (transparentBelow > 0 ? 0.0 : i / 1999.0);
+    const double x = (transparentBelow > 0 ? transparentBelow : 1.0) * i / 1999.0;
     color->AddRGBPoint(x, Hashed(i, 0), Hashed(i, 1), Hashed(i, 2));
     opacity->AddPoint(x, transparentBelow > 0 ? 0.0 : 0.2 * Hashed(i, 3));
   }
