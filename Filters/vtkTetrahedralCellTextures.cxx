@@ -64,6 +64,9 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->FacePlanes.clear();
   this->Neighbors.clear();
   this->Field.clear();
+  this->CellCorners.clear();
+  this->PointTexels.clear();
+  this->CellValues.clear();
   this->BoundaryPoints.clear();
   this->BoundaryTriangles.clear();
   this->BoundaryFaces.clear();
@@ -83,9 +86,29 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
   const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
 
+  const bool compact = this->Layout == COMPACT;
+  if (compact && numberOfPoints > InvertedCorners())
+  {
+    vtkErrorMacro("The compact layout holds at most " << InvertedCorners() << " points, not "
+                                                      << numberOfPoints << ".");
+    return false;
+  }
+  if (compact)
+  {
+    // Corners: point ids and flags; points: (x, s), s set by BuildField().
+    this->CellCorners.resize(4 * numberOfTets);
+    std::transform(this->Tets.begin(), this->Tets.end(), this->CellCorners.begin(),
+      [](vtkIdType id) { return static_cast<int>(id); });
+    this->PointTexels.assign(4 * numberOfPoints, 0.0f);
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      std::copy_n(this->LocalPoints.data() + 3 * i, 3, this->PointTexels.data() + 4 * i);
+    }
+  }
+
   // Face planes: n_f outward unit normal, d_f = n_f . (face centroid).
   this->Degenerate.assign(numberOfTets, 0);
-  this->FacePlanes.assign(16 * numberOfTets, 0.0f);
+  this->FacePlanes.assign(compact ? 0 : 16 * numberOfTets, 0.0f);
   std::vector<signed char> orientation(numberOfTets, 1);
   std::atomic<vtkIdType> degenerate(0), inverted(0);
   double maximumEdge = 0.0;
@@ -106,6 +129,11 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
       // A flat tetrahedron keeps its corners, for the ray to pass through it.
       this->Degenerate[t] = 1;
       ++degenerate;
+      if (compact)
+      {
+        this->CellCorners[4 * t + 3] += FlatCorners();
+        continue;
+      }
       for (int v = 0; v < 4; ++v)
       {
         float* corner = this->FacePlanes.data() + 16 * t + 4 * v;
@@ -123,6 +151,11 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     {
       orientation[t] = -1;
       ++inverted;
+    }
+    if (compact)
+    {
+      this->CellCorners[4 * t + 3] += sign < 0 ? InvertedCorners() : 0;
+      continue;
     }
     for (int f = 0; f < 4; ++f)
     {
@@ -312,7 +345,9 @@ bool vtkTetrahedralCellTextures::FacesTowards(vtkIdType t, const int corner[3],
 bool vtkTetrahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScalars, int component)
 {
   const vtkIdType numberOfTets = this->GetNumberOfTetrahedra();
-  this->Field.assign(4 * numberOfTets, 0.0f);
+  const bool compact = this->Layout == COMPACT;
+  this->Field.assign(compact ? 0 : 4 * numberOfTets, 0.0f);
+  this->CellValues.assign(compact ? numberOfTets : 0, 0.0f);
   this->NumberOfNaNScalars = 0;
   if (!scalars || numberOfTets == 0 || component < 0 ||
       component >= scalars->GetNumberOfComponents())
@@ -322,25 +357,34 @@ bool vtkTetrahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScal
   const double* local = this->LocalPoints.data();
   const vtkIdType* tets = this->Tets.data();
   std::atomic<vtkIdType> nanCells(0);
+  if (compact)
+  {
+    // The points' scalars, interpolated by the march (cell scalars: 0).
+    const vtkIdType numberOfPoints = static_cast<vtkIdType>(this->PointTexels.size() / 4);
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      const double s = cellScalars ? 0.0 : scalars->GetComponent(i, component);
+      this->PointTexels[4 * i + 3] = std::isnan(s) ? 0.0f : static_cast<float>(s);
+    }
+  }
 
 #pragma omp parallel for schedule(static)
   for (vtkIdType t = 0; t < numberOfTets; ++t)
   {
-    float* field = this->Field.data() + 4 * t;
+    float* field = compact ? nullptr : this->Field.data() + 4 * t;
+    float& value = compact ? this->CellValues[t] : field[3];
     if (this->Degenerate[t] || (t < static_cast<vtkIdType>(this->Hidden.size()) && this->Hidden[t]))
     {
-      field[3] = TransparentCellOffset();
+      value = TransparentCellOffset();
       continue;
     }
     if (cellScalars)
     {
       const double s = scalars->GetComponent(this->CellIds[t], component);
-      field[3] = std::isnan(s) ? TransparentCellOffset() : static_cast<float>(s);
+      value = std::isnan(s) ? TransparentCellOffset() : static_cast<float>(s);
       nanCells += std::isnan(s) ? 1 : 0;
       continue;
     }
-    // Gradient of the linear interpolant: M g = ds with rows r_i = p_i - p_0,
-    // solved by Cramer's rule, g = (ds1 r2 x r3 + ds2 r3 x r1 + ds3 r1 x r2) / det M.
     const double* p[4];
     double s[4];
     bool hasNaN = false;
@@ -352,10 +396,16 @@ bool vtkTetrahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScal
     }
     if (hasNaN)
     {
-      field[3] = TransparentCellOffset();
+      value = TransparentCellOffset();
       ++nanCells;
       continue;
     }
+    if (compact)
+    {
+      continue; // the points' scalars, interpolated
+    }
+    // Gradient of the linear interpolant: M g = ds with rows r_i = p_i - p_0,
+    // solved by Cramer's rule, g = (ds1 r2 x r3 + ds2 r3 x r1 + ds3 r1 x r2) / det M.
     const dvec3 p0 = make_vec3(p[0]);
     const dvec3 r1 = make_vec3(p[1]) - p0, r2 = make_vec3(p[2]) - p0, r3 = make_vec3(p[3]) - p0;
     const dvec3 c23 = glm::cross(r2, r3), c31 = glm::cross(r3, r1), c12 = glm::cross(r1, r2);
@@ -376,6 +426,7 @@ bool vtkTetrahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScal
 void vtkTetrahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Layout: " << (this->Layout == COMPACT ? "COMPACT" : "PLANES") << "\n";
   os << indent << "NumberOfTetrahedra: " << this->GetNumberOfTetrahedra() << "\n";
   os << indent << "Origin: (" << this->Origin[0] << ", " << this->Origin[1] << ", "
      << this->Origin[2] << ")\n";

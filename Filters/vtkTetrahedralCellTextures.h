@@ -27,6 +27,12 @@
  *   BuildGeometry: blanked cells, convexification's imaginary cells), gets
  *   the TransparentCellOffset() marker: traversed, rendered empty.
  *
+ * Two layouts (SetLayout()): PLANES stores what the march reads, face
+ * planes and field per tetrahedron (96 bytes with the neighbours); COMPACT
+ * stores the corners, point ids per tetrahedron and coordinates and scalar
+ * per point (Maximo et al. 2008, Sec. 4.1), from which the march computes
+ * the same planes and field (36 bytes per tetrahedron, 16 per point).
+ *
  * No OpenGL here: the mapper uploads these arrays as buffer textures.
  */
 #ifndef vtkTetrahedralCellTextures_h
@@ -46,6 +52,17 @@ public:
   static vtkTetrahedralCellTextures* New();
   vtkTypeMacro(vtkTetrahedralCellTextures, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Layouts
+  {
+    PLANES = 0, // GetFacePlanes(), GetField()
+    COMPACT = 1 // GetCellCorners(), GetPointTexels(), GetCellValues()
+  };
+  ///@{
+  /** The arrays BuildGeometry() and BuildField() make (Layouts), default PLANES. */
+  vtkSetClampMacro(Layout, int, PLANES, COMPACT);
+  int GetLayout() const { return this->Layout; }
+  ///@}
 
   /**
    * Planes, neighbours and boundary of the tetrahedra of `grid`: its
@@ -90,6 +107,16 @@ public:
   static constexpr int SplitFace() { return 1 << 30; }
   static constexpr int ReentryFace() { return (1 << 30) + (1 << 29); }
   static constexpr int MaximumPieces() { return 1024; }
+  ///@}
+
+  ///@{
+  /**
+   * COMPACT layout: added to the fourth point id of a tetrahedron in
+   * GetCellCorners() when it is inverted (its faces wound inward) and when it
+   * is flat (zero volume); point ids stay below InvertedCorners().
+   */
+  static constexpr int InvertedCorners() { return 1 << 29; }
+  static constexpr int FlatCorners() { return 1 << 30; }
   static int NeighborCode(vtkIdType tet, int face, bool folded, bool turnBack)
   {
     const int code = static_cast<int>(4 * tet + face);
@@ -124,6 +151,19 @@ public:
   const std::vector<int>& GetNeighbors() const { return this->Neighbors; }
   /** 4 floats per tetrahedron: (g, s0) with s(x) = g . x + s0. */
   const std::vector<float>& GetField() const { return this->Field; }
+  ///@{
+  /**
+   * COMPACT layout: 4 ints per tetrahedron, its point ids (the fourth plus
+   * InvertedCorners(), FlatCorners() as they apply); 4 floats per grid
+   * point, (x, s) with x relative to GetOrigin() and s its scalar (0 for
+   * cell scalars and for NaN); 1 float per tetrahedron, added to the linear
+   * interpolant of the points' s: the cell scalar, 0 for point scalars, or
+   * TransparentCellOffset().
+   */
+  const std::vector<int>& GetCellCorners() const { return this->CellCorners; }
+  const std::vector<float>& GetPointTexels() const { return this->PointTexels; }
+  const std::vector<float>& GetCellValues() const { return this->CellValues; }
+  ///@}
   /** Boundary points, 3 floats each (relative to GetOrigin()). */
   const std::vector<float>& GetBoundaryPoints() const { return this->BoundaryPoints; }
   /** Boundary triangles, 3 indices into GetBoundaryPoints(), wound outward. */
@@ -174,6 +214,9 @@ public:
   {
     return 16 * (FacePlaneTexels() + NeighborTexels() + FieldTexels());
   }
+  /** COMPACT layout: bytes per tetrahedron (corners, neighbours, value) and per point. */
+  static constexpr int CompactBytesPerTetrahedron() { return 16 + 16 * NeighborTexels() + 4; }
+  static constexpr int CompactBytesPerPoint() { return 16; }
   ///@}
 
 protected:
@@ -193,6 +236,7 @@ protected:
   bool FacesTowards(vtkIdType t, const int corner[3], const std::vector<vtkIdType>& neighbors,
     const std::vector<signed char>& neighborFaces) const;
 
+  int Layout = PLANES;
   double Origin[3] = { 0, 0, 0 };
   double Length = 0;
   double MaximumEdgeLength = 0;
@@ -203,6 +247,9 @@ protected:
   std::vector<float> FacePlanes;
   std::vector<int> Neighbors;
   std::vector<float> Field;
+  std::vector<int> CellCorners;
+  std::vector<float> PointTexels;
+  std::vector<float> CellValues;
   std::vector<float> BoundaryPoints;
   std::vector<unsigned int> BoundaryTriangles;
   std::vector<int> BoundaryFaces;

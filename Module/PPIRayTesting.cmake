@@ -16,22 +16,39 @@ function (ppiray_add_cxx_tests driver)
   create_test_sourcelist(driver_sources "${driver}.cxx" ${sources})
   add_executable("${driver}" ${driver_sources} ${arg_SOURCES})
   target_link_libraries("${driver}" PRIVATE ${arg_LIBRARIES})
+  set_property(TARGET "${driver}" PROPERTY PPIRAY_BASELINE_DIR "${arg_BASELINE_DIR}")
+  foreach (test IN LISTS arg_TESTS)
+    _ppiray_add_cxx_test("${driver}" "${test}" "${driver}.${test}")
+  endforeach ()
+endfunction ()
+
+# ppiray_add_cxx_test_variants(<driver> <suffix> ARGS <arg>... TESTS <name>...):
+# tests of <driver> run again with more arguments, as "<driver>.<name>.<suffix>"
+# (same baselines).
+function (ppiray_add_cxx_test_variants driver suffix)
+  cmake_parse_arguments(PARSE_ARGV 2 arg "" "" "ARGS;TESTS")
+  foreach (test IN LISTS arg_TESTS)
+    _ppiray_add_cxx_test("${driver}" "${test}" "${driver}.${test}.${suffix}" ${arg_ARGS})
+  endforeach ()
+endfunction ()
+
+function (_ppiray_add_cxx_test driver test name)
   set(temporary "${CMAKE_BINARY_DIR}/Testing/Temporary")
   file(MAKE_DIRECTORY "${temporary}")
-  foreach (test IN LISTS arg_TESTS)
-    set(baseline_args)
-    if (arg_BASELINE_DIR)
-      set(baseline_args -V "${arg_BASELINE_DIR}/${test}.png")
-    endif ()
-    add_test(NAME "${driver}.${test}"
-      COMMAND "${driver}" "${test}" -D "${PPIRAY_DATA_ROOT}" -T "${temporary}" ${baseline_args})
-    # A hang fails in 10 minutes (the slowest test takes about 80 s here).
-    set(environment "OMP_NUM_THREADS=2" ${PPIRAY_SANITIZER_ENVIRONMENT})
-    set_tests_properties("${driver}.${test}" PROPERTIES
-      SKIP_RETURN_CODE 125
-      TIMEOUT 600
-      ENVIRONMENT "${environment}")
-  endforeach ()
+  get_property(baseline_dir TARGET "${driver}" PROPERTY PPIRAY_BASELINE_DIR)
+  set(baseline_args)
+  if (baseline_dir)
+    set(baseline_args -V "${baseline_dir}/${test}.png")
+  endif ()
+  add_test(NAME "${name}"
+    COMMAND "${driver}" "${test}" -D "${PPIRAY_DATA_ROOT}" -T "${temporary}" ${baseline_args}
+      ${ARGN})
+  # A hang fails in 10 minutes (the slowest test takes about 80 s here).
+  set(environment "OMP_NUM_THREADS=2" ${PPIRAY_SANITIZER_ENVIRONMENT})
+  set_tests_properties("${name}" PROPERTIES
+    SKIP_RETURN_CODE 125
+    TIMEOUT 600
+    ENVIRONMENT "${environment}")
 endfunction ()
 
 # Under PPIRAY_SANITIZE: leaks are reported (suppressed only in the driver

@@ -39,18 +39,31 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
   // Listed exit faces: split boundary faces (convexified grids) and faces
   // with reflex edges; the search at one is taken from the loop budget after
   // the fact (EXIT_LOOPS, march_common_fs.glsl).
+  // A piece is one cell's planes and a loop over them; a reflex edge's
+  // search three of those and its own loop.
   const Features features = this->GetFeatures();
   const int pieces = features.MaximumSplitPieces;
-  glsl << "const int SPLIT_FACE = " << layout.SplitFace << ";\n"
+  const int pieceLoops = layout.PlaneLoops + 4;
+  const int reentryLoops = 1 + 3 * pieceLoops;
+  glsl << "const int PLANE_LOOPS = " << layout.PlaneLoops << ";\n"
+       << "const int FIELD_LOOPS = " << layout.FieldLoops << ";\n"
+       << "const int SPLIT_PIECE_LOOPS = " << pieceLoops << ";\n"
+       << "const int REENTRY_LOOPS = " << reentryLoops << ";\n"
+       << "const int SPLIT_FACE = " << layout.SplitFace << ";\n"
        << "const bool SPLIT_FACES = " << (pieces > 0 ? "true" : "false") << ";\n"
        << "const int MAXIMUM_SPLIT_PIECES = " << pieces << ";\n"
        << "const int REENTRY_FACE = " << layout.ReentryFace << ";\n"
        << "const bool REENTRY_EDGES = " << (features.ReentryEdges ? "true" : "false") << ";\n"
-       << "const int EXIT_LOOPS = " << std::max(8 * pieces + 1, features.ReentryEdges ? 17 : 0)
-       << ";\n";
-  glsl << this->Geometry.TexelFunction(layout.GeometryName, "samplerBuffer", "vec4")
-       << this->Neighbors.TexelFunction(layout.NeighborName, "isamplerBuffer", "ivec4")
-       << this->Field.TexelFunction(layout.FieldName, "samplerBuffer", "vec4");
+       << "const int EXIT_LOOPS = "
+       << std::max(pieceLoops * pieces + 1, features.ReentryEdges ? reentryLoops : 0) << ";\n";
+  const std::vector<CellArray> arrays = this->GetCellArrays();
+  for (size_t i = 0; i < arrays.size(); ++i)
+  {
+    const bool integers = arrays[i].Type == VTK_INT;
+    const char* sampler = integers ? "isamplerBuffer" : "samplerBuffer";
+    glsl << "uniform " << sampler << " " << arrays[i].Name << ";\n"
+         << this->Arrays[i].TexelFunction(arrays[i].Name, sampler, integers ? "ivec4" : "vec4");
+  }
   return glsl.str();
 }
 
@@ -97,56 +110,57 @@ void vtkPPIRayCellBuffers::ReportFoldedFaces(vtkIdType folded, vtkObject* report
 //------------------------------------------------------------------------------
 bool vtkPPIRayCellBuffers::Upload(vtkOpenGLRenderWindow* context, vtkObject* reporter)
 {
-  const Layout layout = this->GetLayout();
   const size_t cells = static_cast<size_t>(this->GetNumberOfCells());
-  const Arrays arrays = this->GetArrays();
+  const std::vector<CellArray> arrays = this->GetCellArrays();
+  const Boundary boundary = this->GetBoundary();
   const size_t part = this->MaximumBufferTexels;
   auto failed = [&](const char* what, const vtkPPIRayBufferTexture& texture)
   {
-    vtkErrorWithObjectMacro(reporter, "Could not upload "
-                                        << what << " of " << cells << " " << this->GetCellName()
-                                        << " to the GPU: " << texture.Why() << ".");
+    vtkErrorWithObjectMacro(reporter, "Could not upload " << what << " of " << cells << " "
+                                                          << this->GetCellName()
+                                                          << " to the GPU: " << texture.Why() << "."
+                                                          << this->GetSmallerLayoutHint());
     return false;
   };
-  if (!this->GeometryOnGPU)
+  const bool geometry = !this->GeometryOnGPU, field = !this->FieldOnGPU;
+  for (size_t i = 0; i < arrays.size(); ++i)
   {
-    if (!this->Geometry.Upload(
-          context, arrays.Geometry.data(), layout.GeometryTexels * cells, 4, VTK_FLOAT, part))
+    const CellArray& a = arrays[i];
+    if ((a.Field ? field : geometry) &&
+        !this->Arrays[i].Upload(context, a.Data, a.Texels, a.Components, a.Type, part))
     {
-      return failed("the cell geometry", this->Geometry);
+      return failed(a.What, this->Arrays[i]);
     }
-    if (!this->Neighbors.Upload(
-          context, arrays.Neighbors.data(), arrays.Neighbors.size() / 4, 4, VTK_INT, part))
+  }
+  if (geometry)
+  {
+    for (size_t i = arrays.size(); i < MaximumArrays; ++i)
     {
-      return failed("the neighbours", this->Neighbors);
+      this->Arrays[i].ReleaseGraphicsResources(context); // another layout's
     }
     if (!this->BoundaryFaces.Upload(
-          context, arrays.BoundaryFaces.data(), arrays.BoundaryFaces.size(), 1, VTK_INT) ||
+          context, boundary.Faces.data(), boundary.Faces.size(), 1, VTK_INT) ||
         this->BoundaryFaces.GetNumberOfParts() > 1)
     {
       return failed("the boundary faces", this->BoundaryFaces);
     }
-    if (!this->BoundaryPoints->Upload(arrays.BoundaryPoints, vtkOpenGLBufferObject::ArrayBuffer) ||
+    if (!this->BoundaryPoints->Upload(boundary.Points, vtkOpenGLBufferObject::ArrayBuffer) ||
         !this->BoundaryTriangles->Upload(
-          arrays.BoundaryTriangles, vtkOpenGLBufferObject::ElementArrayBuffer))
+          boundary.Triangles, vtkOpenGLBufferObject::ElementArrayBuffer))
     {
       vtkErrorWithObjectMacro(reporter, "Could not upload the boundary of "
                                           << cells << " " << this->GetCellName()
-                                          << " to the GPU (out of GPU memory?).");
+                                          << " to the GPU (out of GPU memory?)."
+                                          << this->GetSmallerLayoutHint());
       return false;
     }
-    this->BoundaryBytes = sizeof(float) * arrays.BoundaryPoints.size() +
-                          sizeof(unsigned int) * arrays.BoundaryTriangles.size();
+    this->BoundaryBytes =
+      sizeof(float) * boundary.Points.size() + sizeof(unsigned int) * boundary.Triangles.size();
     this->GeometryOnGPU = true;
     ++this->GeometryUploadCount;
   }
-  if (!this->FieldOnGPU)
+  if (field)
   {
-    if (!this->Field.Upload(
-          context, arrays.Field.data(), layout.FieldTexels * cells, 4, VTK_FLOAT, part))
-    {
-      return failed("the scalar field", this->Field);
-    }
     this->FieldOnGPU = true;
     ++this->FieldUploadCount;
   }
@@ -156,10 +170,11 @@ bool vtkPPIRayCellBuffers::Upload(vtkOpenGLRenderWindow* context, vtkObject* rep
 //------------------------------------------------------------------------------
 void vtkPPIRayCellBuffers::Bind(vtkShaderProgram* program, std::vector<vtkTextureObject*>& active)
 {
-  const Layout layout = this->GetLayout();
-  this->Geometry.Bind(program, layout.GeometryName, active);
-  this->Neighbors.Bind(program, layout.NeighborName, active);
-  this->Field.Bind(program, layout.FieldName, active);
+  const std::vector<CellArray> arrays = this->GetCellArrays();
+  for (size_t i = 0; i < arrays.size(); ++i)
+  {
+    this->Arrays[i].Bind(program, arrays[i].Name, active);
+  }
   this->BoundaryFaces.Bind(program, "boundaryFaces", active);
 }
 
@@ -179,9 +194,9 @@ bool vtkPPIRayCellBuffers::IsBoundaryConvex()
 {
   if (this->ConvexityCheckedAt != this->GeometryUploadCount)
   {
-    const Arrays arrays = this->GetArrays();
+    const Boundary boundary = this->GetBoundary();
     this->Convex = ppiray::IsConvexSurface(
-      arrays.BoundaryPoints, arrays.BoundaryTriangles, 1e-6 * this->GetBoundingRadius());
+      boundary.Points, boundary.Triangles, 1e-6 * this->GetBoundingRadius());
     this->ConvexityCheckedAt = this->GeometryUploadCount;
   }
   return this->Convex;
@@ -190,16 +205,21 @@ bool vtkPPIRayCellBuffers::IsBoundaryConvex()
 //------------------------------------------------------------------------------
 size_t vtkPPIRayCellBuffers::GetGPUBytes() const
 {
-  return this->Geometry.GetBytes() + this->Neighbors.GetBytes() + this->Field.GetBytes() +
-         this->BoundaryFaces.GetBytes() + this->BoundaryBytes;
+  size_t bytes = this->BoundaryFaces.GetBytes() + this->BoundaryBytes;
+  for (const vtkPPIRayBufferTexture& array : this->Arrays)
+  {
+    bytes += array.GetBytes();
+  }
+  return bytes;
 }
 
 //------------------------------------------------------------------------------
 void vtkPPIRayCellBuffers::ReleaseGraphicsResources(vtkWindow* window)
 {
-  this->Geometry.ReleaseGraphicsResources(window);
-  this->Neighbors.ReleaseGraphicsResources(window);
-  this->Field.ReleaseGraphicsResources(window);
+  for (vtkPPIRayBufferTexture& array : this->Arrays)
+  {
+    array.ReleaseGraphicsResources(window);
+  }
   this->BoundaryFaces.ReleaseGraphicsResources(window);
   this->BoundaryPoints->ReleaseGraphicsResources();
   this->BoundaryTriangles->ReleaseGraphicsResources();

@@ -41,17 +41,14 @@ public:
   virtual ~vtkPPIRayCellBuffers();
 
   /**
-   * Texels (4 components each) per cell of the three buffer textures and the
-   * names the march shader reads them by; the neighbour-code base (code =
-   * Faces * cell + face) and markers.
+   * Texels per cell of the geometry, neighbour and field arrays (the
+   * march's GEOMETRY_TEXELS, NEIGHBOR_TEXELS, FIELD_TEXELS); the
+   * neighbour-code base (code = Faces * cell + face) and markers.
    */
   struct Layout
   {
-    const char* GeometryName;
     int GeometryTexels;
-    const char* NeighborName;
     int NeighborTexels;
-    const char* FieldName;
     int FieldTexels;
     int Faces;
     int TurnBack;          // added to a folded face's code where the cell it is in is inverted
@@ -59,14 +56,16 @@ public:
     float EmptyCellOffset; // first field value of a cell that renders empty
     int SplitFace = 0;     // neighbour codes from here on name a split face's list (0: none)
     int ReentryFace = 0;   // ... and from here on a reflex-edge face's partners (0: none)
+    int PlaneLoops = 4;    // loop iterations reading a cell's planes (PLANE_LOOPS) ...
+    int FieldLoops = 0;    // ... and its field after them (FIELD_LOOPS)
   };
   virtual Layout GetLayout() const = 0;
 
   /**
-   * GLSL constants of GetLayout(), as the march shaders declare them, and
-   * the functions reading the cell textures (`facePlanesTexel(i)`... after
-   * the layout's names: texel i of an array however many buffer textures
-   * hold it; valid after Upload()).
+   * GLSL constants of GetLayout(), as the march shaders declare them, the
+   * samplers of the cell arrays and the functions reading them
+   * (`facePlanesTexel(i)`... after the arrays' names: texel i of an array
+   * however many buffer textures hold it; valid after Upload()).
    */
   std::string LayoutDeclarations() const;
 
@@ -82,6 +81,9 @@ public:
 
   /** "tetrahedra" or "hexahedra", for messages. */
   virtual const char* GetCellName() const = 0;
+
+  /** What to try when the arrays do not fit on the GPU ("" if nothing), for messages. */
+  virtual const char* GetSmallerLayoutHint() const { return ""; }
 
   enum class BuildResult
   {
@@ -143,7 +145,7 @@ public:
   /** The boundary triangles (wound outward) the entry pass draws. */
   vtkOpenGLBufferObject* GetBoundaryPoints() { return this->BoundaryPoints; }
   vtkOpenGLBufferObject* GetBoundaryTriangles() { return this->BoundaryTriangles; }
-  size_t GetNumberOfBoundaryIndices() const { return this->GetArrays().BoundaryTriangles.size(); }
+  size_t GetNumberOfBoundaryIndices() const { return this->GetBoundary().Triangles.size(); }
   ///@}
 
   /**
@@ -160,17 +162,28 @@ public:
 protected:
   vtkPPIRayCellBuffers();
 
-  // The CPU arrays, laid out as GetLayout() says.
-  struct Arrays
+  // One array of the cell textures, as the march reads it.
+  struct CellArray
   {
-    const std::vector<float>& Geometry;
-    const std::vector<int>& Neighbors;
-    const std::vector<float>& Field;
-    const std::vector<float>& BoundaryPoints;           // 3 per point
-    const std::vector<unsigned int>& BoundaryTriangles; // 3 point indices each
-    const std::vector<int>& BoundaryFaces;              // per triangle: the cell and face
+    const char* Name; // the sampler; GLSL reads texel i as `NameTexel(i)`
+    const char* What; // for messages: "the neighbours"
+    const void* Data;
+    size_t Texels;
+    int Components; // 1 or 4 (a texel is read as a vec4 or ivec4 either way)
+    int Type;       // VTK_FLOAT or VTK_INT
+    bool Field;     // rebuilt with the field (else with the geometry)
   };
-  virtual Arrays GetArrays() const = 0;
+  static constexpr int MaximumArrays = 4;
+  // The CPU arrays, laid out as GetLayout() says (at most MaximumArrays).
+  virtual std::vector<CellArray> GetCellArrays() const = 0;
+  // The boundary the entry pass draws.
+  struct Boundary
+  {
+    const std::vector<float>& Points;           // 3 per point
+    const std::vector<unsigned int>& Triangles; // 3 point indices each
+    const std::vector<int>& Faces;              // per triangle: the cell and face
+  };
+  virtual Boundary GetBoundary() const = 0;
   // Builds the field texels; returns the number of cells touching a NaN value.
   virtual vtkIdType ComputeField(vtkDataArray* values, bool cellData) = 0;
   // Appends a cell's section triangles to PlaneSection()'s vertices.
@@ -187,9 +200,7 @@ private:
   vtkPPIRayCellBuffers(const vtkPPIRayCellBuffers&) = delete;
   void operator=(const vtkPPIRayCellBuffers&) = delete;
 
-  vtkPPIRayBufferTexture Geometry;
-  vtkPPIRayBufferTexture Neighbors;
-  vtkPPIRayBufferTexture Field;
+  vtkPPIRayBufferTexture Arrays[MaximumArrays]; // as GetCellArrays() lists them
   vtkPPIRayBufferTexture BoundaryFaces;
   vtkNew<vtkOpenGLBufferObject> BoundaryPoints;
   vtkNew<vtkOpenGLBufferObject> BoundaryTriangles;

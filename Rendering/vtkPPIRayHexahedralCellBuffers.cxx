@@ -21,9 +21,22 @@
 vtkPPIRayCellBuffers::Layout vtkPPIRayHexahedralCellBuffers::GetLayout() const
 {
   using Cells = vtkHexahedralCellTextures;
-  return { "hexCorners", Cells::CornerTexels(), "hexNeighbors", Cells::NeighborTexels(),
-    "hexCoefficients", Cells::CoefficientTexels(), 6, Cells::TurnBack(), 0.0f,
-    Cells::TransparentCellOffset() };
+  return { Cells::CornerTexels(), Cells::NeighborTexels(), Cells::CoefficientTexels(), 6,
+    Cells::TurnBack(), 0.0f, Cells::TransparentCellOffset() };
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkPPIRayCellBuffers::CellArray> vtkPPIRayHexahedralCellBuffers::GetCellArrays() const
+{
+  using Cells = vtkHexahedralCellTextures;
+  const auto& c = *this->Cells;
+  const size_t n = static_cast<size_t>(c.GetNumberOfHexahedra());
+  return { { "hexCorners", "the cell geometry", c.GetCorners().data(), Cells::CornerTexels() * n, 4,
+             VTK_FLOAT, false },
+    { "hexNeighbors", "the neighbours", c.GetNeighbors().data(), c.GetNeighbors().size() / 4, 4,
+      VTK_INT, false },
+    { "hexCoefficients", "the scalar field", c.GetCoefficients().data(),
+      Cells::CoefficientTexels() * n, 4, VTK_FLOAT, true } };
 }
 
 //------------------------------------------------------------------------------

@@ -33,11 +33,11 @@ public:
   void PlaneSection(const glm::dvec4& plane, std::vector<float>& vertices) const override;
 
 protected:
-  Arrays GetArrays() const override
+  std::vector<CellArray> GetCellArrays() const override;
+  Boundary GetBoundary() const override
   {
     const auto& c = *this->Cells;
-    return { c.GetCorners(), c.GetNeighbors(), c.GetCoefficients(), c.GetBoundaryPoints(),
-      c.GetBoundaryTriangles(), c.GetBoundaryFaces() };
+    return { c.GetBoundaryPoints(), c.GetBoundaryTriangles(), c.GetBoundaryFaces() };
   }
   vtkIdType ComputeField(vtkDataArray* values, bool cellData) override
   {

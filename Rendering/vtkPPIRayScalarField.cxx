@@ -38,6 +38,17 @@ vtkPPIRayScalarField::Status vtkPPIRayScalarField::Update(
     return Status::Failed;
   }
   this->Reported = false;
+  // Read per cell (cellFlag 1), else per point.
+  const vtkIdType needed = cellFlag == 1 ? input->GetNumberOfCells() : input->GetNumberOfPoints();
+  if (scalars->GetNumberOfTuples() < needed)
+  {
+    vtkErrorWithObjectMacro(reporter,
+      "Scalar array " << (scalars->GetName() ? scalars->GetName() : "") << " has "
+                      << scalars->GetNumberOfTuples() << " values for " << needed
+                      << (cellFlag == 1 ? " cells" : " points") << "; nothing is rendered.");
+    this->Array = nullptr;
+    return Status::Failed;
+  }
   const int components = scalars->GetNumberOfComponents();
   const int component = components > 1 && selection.Magnitude
                           ? -1

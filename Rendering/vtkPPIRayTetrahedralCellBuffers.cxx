@@ -8,6 +8,10 @@
 
 #include "march_common_fs.h"
 #include "march_fs.h"
+#include "tetrahedron_corners_fs.h"
+#include "tetrahedron_planes_fs.h"
+
+#include "vtkUnstructuredGridCellAdjacency.h"
 
 #include <sstream>
 
@@ -27,12 +31,51 @@ std::string CellTypesMessage(const std::vector<vtkIdType>& typesAndCounts)
 }
 
 //------------------------------------------------------------------------------
+const char* vtkPPIRayTetrahedralCellBuffers::GetSmallerLayoutHint() const
+{
+  return this->Cells->GetLayout() == vtkTetrahedralCellTextures::PLANES
+           ? " (the mapper's compact tetrahedron layout, SetTetrahedronLayoutToCompact, needs "
+             "about "
+             "half the memory)"
+           : "";
+}
+
+//------------------------------------------------------------------------------
 vtkPPIRayCellBuffers::Layout vtkPPIRayTetrahedralCellBuffers::GetLayout() const
 {
   using Cells = vtkTetrahedralCellTextures;
-  return { "facePlanes", Cells::FacePlaneTexels(), "neighbors", Cells::NeighborTexels(), "field",
-    Cells::FieldTexels(), 4, Cells::TurnBack(), Cells::FlatCellMarker(),
-    Cells::TransparentCellOffset(), Cells::SplitFace(), Cells::ReentryFace() };
+  if (this->Cells->GetLayout() == Cells::COMPACT)
+  {
+    // Read: the corners' texel and 4 points, 4 planes; the field 4 more.
+    return { 1, Cells::NeighborTexels(), 1, 4, Cells::TurnBack(), Cells::FlatCellMarker(),
+      Cells::TransparentCellOffset(), Cells::SplitFace(), Cells::ReentryFace(), 8, 4 };
+  }
+  return { Cells::FacePlaneTexels(), Cells::NeighborTexels(), Cells::FieldTexels(), 4,
+    Cells::TurnBack(), Cells::FlatCellMarker(), Cells::TransparentCellOffset(), Cells::SplitFace(),
+    Cells::ReentryFace(), 4, 0 };
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkPPIRayCellBuffers::CellArray> vtkPPIRayTetrahedralCellBuffers::GetCellArrays() const
+{
+  using Cells = vtkTetrahedralCellTextures;
+  const auto& c = *this->Cells;
+  const size_t n = static_cast<size_t>(c.GetNumberOfTetrahedra());
+  const CellArray neighbors = { "neighbors", "the neighbours", c.GetNeighbors().data(),
+    c.GetNeighbors().size() / 4, 4, VTK_INT, false };
+  if (c.GetLayout() == Cells::COMPACT)
+  {
+    return { { "cellCorners", "the cell corners", c.GetCellCorners().data(), n, 4, VTK_INT, false },
+      neighbors,
+      { "points", "the points", c.GetPointTexels().data(), c.GetPointTexels().size() / 4, 4,
+        VTK_FLOAT, true },
+      { "cellValues", "the scalar field", c.GetCellValues().data(), n, 1, VTK_FLOAT, true } };
+  }
+  return { { "facePlanes", "the cell geometry", c.GetFacePlanes().data(),
+             Cells::FacePlaneTexels() * n, 4, VTK_FLOAT, false },
+    neighbors,
+    { "field", "the scalar field", c.GetField().data(), Cells::FieldTexels() * n, 4, VTK_FLOAT,
+      true } };
 }
 
 //------------------------------------------------------------------------------
@@ -52,10 +95,30 @@ std::string vtkPPIRayTetrahedralCellBuffers::GetMarchShader(int) const
   std::string march = march_fs;
   vtkShaderProgram::Substitute(march, "//PPIRay::MarchCommon::Impl", march_common_fs);
   const Features features = this->GetFeatures();
-  vtkShaderProgram::Substitute(march, "//PPIRay::Cells::Dec",
-    this->LayoutDeclarations() +
-      "const bool FLAT_CELLS = " + (features.FlatCells ? "true" : "false") +
-      ";\nconst bool FOLDS = " + (features.Folds ? "true" : "false") + ";");
+  std::string declarations = this->LayoutDeclarations() +
+                             "const bool FLAT_CELLS = " + (features.FlatCells ? "true" : "false") +
+                             ";\nconst bool FOLDS = " + (features.Folds ? "true" : "false") + ";\n";
+  const bool compact = this->Cells->GetLayout() == vtkTetrahedralCellTextures::COMPACT;
+  if (compact)
+  {
+    // The corners' flags and the faces' corners, wound outward
+    // (vtkUnstructuredGridCellAdjacency::FaceVertex).
+    std::ostringstream corners;
+    corners << "const int INVERTED_CORNERS = " << vtkTetrahedralCellTextures::InvertedCorners()
+            << ";\nconst int FLAT_CORNERS = " << vtkTetrahedralCellTextures::FlatCorners()
+            << ";\nconst ivec3 FACE_CORNERS[4] = ivec3[4](";
+    for (int f = 0; f < 4; ++f)
+    {
+      corners << (f ? ", " : "") << "ivec3(" << vtkUnstructuredGridCellAdjacency::FaceVertex(f, 0)
+              << ", " << vtkUnstructuredGridCellAdjacency::FaceVertex(f, 1) << ", "
+              << vtkUnstructuredGridCellAdjacency::FaceVertex(f, 2) << ")";
+    }
+    corners << ");\n";
+    declarations += corners.str();
+  }
+  vtkShaderProgram::Substitute(march, "//PPIRay::Cells::Dec", declarations);
+  vtkShaderProgram::Substitute(march, "//PPIRay::TetrahedronCells::Impl",
+    compact ? tetrahedron_corners_fs : tetrahedron_planes_fs);
   return march;
 }
 
@@ -64,6 +127,14 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayTetrahedralCellBuffers::BuildGeometry
   vtkUnstructuredGrid* grid, vtkObject* reporter)
 {
   this->GeometryOnGPU = this->FieldOnGPU = false;
+  if (this->Cells->GetLayout() == vtkTetrahedralCellTextures::COMPACT &&
+      grid->GetNumberOfPoints() > vtkTetrahedralCellTextures::InvertedCorners())
+  {
+    vtkErrorWithObjectMacro(reporter, "Mesh too large for the compact layout: "
+                                        << grid->GetNumberOfPoints() << " points (limit "
+                                        << vtkTetrahedralCellTextures::InvertedCorners() << ").");
+    return BuildResult::Failed;
+  }
   const bool built = this->Cells->BuildGeometry(grid);
   vtkTetrahedralCellTextures& cells = *this->Cells;
   if (cells.GetNumberOfUnsupportedCells() > 0)

@@ -4,7 +4,9 @@
  *
  * vtkTetrahedralCellTextures (any mesh of 3D linear cells, split into
  * conforming tetrahedra) behind vtkPPIRayCellBuffers, marched by
- * glsl/march_fs.glsl. Internal to PPIRay::Rendering.
+ * glsl/march_fs.glsl with the cells read as the layout says
+ * (tetrahedron_planes_fs.glsl, tetrahedron_corners_fs.glsl). Internal to
+ * PPIRay::Rendering.
  */
 #ifndef vtkPPIRayTetrahedralCellBuffers_h
 #define vtkPPIRayTetrahedralCellBuffers_h
@@ -20,6 +22,7 @@ public:
   Layout GetLayout() const override;
   Features GetFeatures() const override;
   const char* GetCellName() const override { return "tetrahedra"; }
+  const char* GetSmallerLayoutHint() const override;
   BuildResult BuildGeometry(vtkUnstructuredGrid* grid, vtkObject* reporter) override;
   const double* GetOrigin() const override { return this->Cells->GetOrigin(); }
   vtkIdType GetNumberOfCells() const override { return this->Cells->GetNumberOfTetrahedra(); }
@@ -34,15 +37,21 @@ public:
     return this->Cells->GetNumberOfTetrahedra() - this->Cells->GetNumberOfDegenerateTetrahedra();
   }
 
+  /**
+   * The layout of the next BuildGeometry() (vtkTetrahedralCellTextures::
+   * Layouts); the one built is GetTextures()->GetLayout().
+   */
+  void SetLayout(int layout) { this->Cells->SetLayout(layout); }
+
   /** The cell textures behind the buffers (counts of what was built). */
   vtkTetrahedralCellTextures* GetTextures() { return this->Cells; }
 
 protected:
-  Arrays GetArrays() const override
+  std::vector<CellArray> GetCellArrays() const override;
+  Boundary GetBoundary() const override
   {
     const auto& c = *this->Cells;
-    return { c.GetFacePlanes(), c.GetNeighbors(), c.GetField(), c.GetBoundaryPoints(),
-      c.GetBoundaryTriangles(), c.GetBoundaryFaces() };
+    return { c.GetBoundaryPoints(), c.GetBoundaryTriangles(), c.GetBoundaryFaces() };
   }
   vtkIdType ComputeField(vtkDataArray* values, bool cellData) override
   {

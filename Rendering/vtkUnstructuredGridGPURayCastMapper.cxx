@@ -72,6 +72,7 @@ public:
   vtkUnstructuredGridBase* CellsInput = nullptr;
   vtkTimeStamp CellsTime;
   bool CellsForHexahedra = false; // built with a hexahedron mode other than SUBDIVIDE
+  int CellsLayout = 0;            // the tetrahedron layout built
   bool CellsValid = false;
   vtkNew<vtkUnstructuredGrid> InputCopy;   // when the input is not a vtkUnstructuredGrid
   vtkNew<vtkUnstructuredGrid> Convexified; // NON_CONVEX_CONVEXIFY: the Convexifier's output
@@ -342,6 +343,13 @@ void vtkUnstructuredGridGPURayCastMapper::SetHexahedronMode(int mode)
 }
 
 //------------------------------------------------------------------------------
+const char* vtkUnstructuredGridGPURayCastMapper::GetTetrahedronLayoutAsString()
+{
+  return this->TetrahedronLayout == TETRAHEDRON_COMPACT ? "TETRAHEDRON_COMPACT"
+                                                        : "TETRAHEDRON_PLANES";
+}
+
+//------------------------------------------------------------------------------
 const char* vtkUnstructuredGridGPURayCastMapper::GetHexahedronModeAsString()
 {
   switch (this->HexahedronMode)
@@ -465,12 +473,13 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateCells(
     sourceTime, grid && grid->GetCells() ? grid->GetCells()->GetMTime() : input->GetMTime());
   const bool forHexahedra = this->HexahedronMode != HEXAHEDRON_SUBDIVIDE;
   if (in.CellsInput == input && sourceTime <= in.CellsTime.GetMTime() &&
-      in.CellsForHexahedra == forHexahedra)
+      in.CellsForHexahedra == forHexahedra && in.CellsLayout == this->TetrahedronLayout)
   {
     return in.CellsValid;
   }
   in.CellsInput = input;
   in.CellsForHexahedra = forHexahedra;
+  in.CellsLayout = this->TetrahedronLayout;
   in.CellsTime.Modified();
   in.CellsValid = false;
   in.Field.Invalidate(); // the field follows the cells
@@ -499,6 +508,9 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateCells(
   if (result == Result::Declined)
   {
     cells = &in.Tetrahedra;
+    in.Tetrahedra.SetLayout(this->TetrahedronLayout == TETRAHEDRON_COMPACT
+                              ? vtkTetrahedralCellTextures::COMPACT
+                              : vtkTetrahedralCellTextures::PLANES);
     result = in.Tetrahedra.BuildGeometry(grid, this);
   }
   if (in.Cells && in.Cells != cells)
@@ -795,6 +807,7 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
   this->Superclass::PrintSelf(os, indent);
   os << indent << "IntegrationMode: " << this->GetIntegrationModeAsString() << "\n";
   os << indent << "HexahedronMode: " << this->GetHexahedronModeAsString() << "\n";
+  os << indent << "TetrahedronLayout: " << this->GetTetrahedronLayoutAsString() << "\n";
   os << indent << "EmbedIsoSurfaces: " << this->EmbedIsoSurfaces << "\n";
   os << indent << "AverageIPScalarRange: (" << this->AverageIPScalarRange[0] << ", "
      << this->AverageIPScalarRange[1] << ")\n";

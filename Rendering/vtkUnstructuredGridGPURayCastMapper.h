@@ -135,6 +135,32 @@ public:
   ///@}
 
   /**
+   * How tetrahedra (and the cells split into them) are laid out in GPU
+   * memory; see Documentation/algorithms.md, "Cell layouts".
+   * - TETRAHEDRON_PLANES: each tetrahedron's four face planes and linear
+   *   field stored (Espinha & Celes 2005), 96 bytes per tetrahedron;
+   * - TETRAHEDRON_COMPACT: point ids per tetrahedron and coordinates and
+   *   scalar per point, the planes and field computed in the march (Maximo
+   *   et al. 2008), 36 bytes per tetrahedron and 16 per point (about 40 per
+   *   tetrahedron in a typical mesh).
+   * Default TETRAHEDRON_PLANES. Images agree to float rounding.
+   */
+  enum TetrahedronLayouts
+  {
+    TETRAHEDRON_PLANES = 0,
+    TETRAHEDRON_COMPACT = 1
+  };
+
+  ///@{
+  /** The tetrahedron layout (TetrahedronLayouts), default TETRAHEDRON_PLANES. */
+  vtkSetClampMacro(TetrahedronLayout, int, TETRAHEDRON_PLANES, TETRAHEDRON_COMPACT);
+  vtkGetMacro(TetrahedronLayout, int);
+  void SetTetrahedronLayoutToPlanes() { this->SetTetrahedronLayout(TETRAHEDRON_PLANES); }
+  void SetTetrahedronLayoutToCompact() { this->SetTetrahedronLayout(TETRAHEDRON_COMPACT); }
+  const char* GetTetrahedronLayoutAsString();
+  ///@}
+
+  /**
    * Blend modes: COMPOSITE_BLEND (vtkUnstructuredGridVolumeMapper) and VTK's
    * ISOSURFACE_BLEND (the value of vtkVolumeMapper::ISOSURFACE_BLEND): the
    * isosurfaces of vtkVolumeProperty::GetIsoSurfaceValues() (at most 16),
@@ -476,6 +502,7 @@ protected:
 
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
   int HexahedronMode = HEXAHEDRON_ACCURATE;
+  int TetrahedronLayout = TETRAHEDRON_PLANES;
   vtkTypeBool EmbedIsoSurfaces = 0;
   double AverageIPScalarRange[2] = { VTK_FLOAT_MIN, VTK_FLOAT_MAX };
   int VectorMode = MAGNITUDE;

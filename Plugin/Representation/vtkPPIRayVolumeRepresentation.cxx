@@ -181,6 +181,12 @@ void vtkPPIRayVolumeRepresentation::SetNonConvexMode(int mode)
 }
 
 //------------------------------------------------------------------------------
+void vtkPPIRayVolumeRepresentation::SetTetrahedronLayout(int layout)
+{
+  this->Mapper->SetTetrahedronLayout(layout);
+}
+
+//------------------------------------------------------------------------------
 void vtkPPIRayVolumeRepresentation::SetPsiTableSize(int size)
 {
   this->Mapper->SetPsiTableSize(size);

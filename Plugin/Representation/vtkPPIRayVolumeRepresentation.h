@@ -53,6 +53,7 @@ public:
   void SetIntegrationMode(int mode);
   void SetMaximumNumberOfPeels(int peels);
   void SetNonConvexMode(int mode);
+  void SetTetrahedronLayout(int layout);
   void SetPsiTableSize(int size);
   void SetPreIntegrationTableSize(int size);
   void SetTerminationOpacity(double opacity);

@@ -32,20 +32,24 @@ out vec4 fragOutput2;
 const float INFINITY = 3.0e38;
 
 // Loop budget. A driver may end a shader invocation's loops silently past a
-// total count (Mesa's llvmpipe: 65,535 iterations of all loops together), so
-// a ray that needs more work (thousands of control points crossed, long
-// rays) would end early and dark. The march spends at most LOOP_BUDGET
-// iterations in a pass, counted conservatively: STEP_LOOPS per cell step
-// (declared by the march), PIECE_LOOPS per piece between control points (the
-// integration mode's worst case), the control-point walks as they go; LOOP_RESERVE, above every count
-// taken after the fact (two walks over at most 4,096 control points, the
-// search at a listed exit face), keeps
-// the total under the driver's. Where the budget runs out the ray stops at a
-// cell and a ray parameter and the next pass continues it there
-// (continuation: its code and the steps taken so far in this peel, which
-// MaximumNumberOfSteps bounds across passes, in the third target).
-const int LOOP_BUDGET = 49152;
-const int LOOP_RESERVE = 2 * 4096 + 64 + EXIT_LOOPS;
+// total count (Mesa's llvmpipe: 65,535 iterations of all loops together,
+// counted for the SIMD group of pixels that run together, whose loops go on
+// while any of its lanes needs them), so a ray that needs more work
+// (thousands of control points crossed, long rays) would end early and dark.
+// The march spends at most LOOP_BUDGET iterations in a pass, counted
+// conservatively: STEP_LOOPS per cell step (declared by the march),
+// PIECE_LOOPS per piece between control points (the integration mode's worst
+// case), the control-interval searches as they go; LOOP_RESERVE, above every
+// count taken after the fact (two searches, the search at a listed exit
+// face), keeps the total under the driver's. Where the budget runs out the
+// ray stops at a cell and a ray parameter and the next pass continues it
+// there (continuation: its code and the steps taken so far in this peel,
+// which MaximumNumberOfSteps bounds across passes, in the third target).
+// The margin between the budget and the driver's limit is for the lanes of
+// a group that take different numbers of iterations in the same step.
+const int CONTROL_SEARCH_LOOPS = 32; // a control-interval search at most
+const int LOOP_BUDGET = 40960;
+const int LOOP_RESERVE = 2 * CONTROL_SEARCH_LOOPS + 64 + EXIT_LOOPS;
 int loopsLeft = LOOP_BUDGET;
 bool outOfLoops = false;   // the work stopped for the budget ...
 float cutAt = 0.0;         // ... this far into the stretch it was given

@@ -6,16 +6,16 @@
 // March pass: per pixel, from the cell a ray enters through (entry pass) to
 // the cell it leaves the mesh from, one tetrahedron at a time.
 //
-// Cell textures (Espinha & Celes 2005, Sec. 3.1), all in the mesh's local frame
-// (texels per cell: GEOMETRY_TEXELS = 4, NEIGHBOR_TEXELS = FIELD_TEXELS = 1,
-// declared by vtkPPIRayTetrahedralCellBuffers):
-//   facePlanes[4 t + f] = (n_f, d_f), outward unit normal, n_f . x = d_f on face f;
-//                         a flat cell: its corners (x_v, FLAT_CELL)
-//   neighbors[t][f]     = 4 t' + f' of the cell and face through face f;
-//                         across a folded face -(4 t' + f' + 2), or
-//                         -(4 t' + f' + 2 + TURN_BACK) where t is the
+// The cells, in the mesh's local frame, as one of two layouts gives them
+// (tetrahedron_planes_fs.glsl, tetrahedron_corners_fs.glsl, chosen by
+// vtkPPIRayTetrahedralCellBuffers): facePlane(t, f) = (n_f, d_f), outward
+// unit normal, n_f . x = d_f on face f, or a flat cell's corner f (x_f,
+// FLAT_CELL); the field (g, s0), s(x) = g . x + s0 (s0 = -3e38: render
+// empty); and
+//   neighborsTexel(NEIGHBOR_TEXELS t)[f] = 4 t' + f' of the cell and face
+//                         through face f; across a folded face -(4 t' + f' + 2),
+//                         or -(4 t' + f' + 2 + TURN_BACK) where t is the
 //                         inverted side; -1: boundary
-//   field[t]            = (g, s0): s(x) = g . x + s0 (s0 = -3e38: render empty)
 // The exit face is the nearest face plane the ray is heading out of
 // (Weiler et al. 2003, Sec. 3.2): t_f = (d_f - n_f . o) / (n_f . r), n_f . r > 0.
 // Every segment is integrated by integrateSegment(), the integration mode,
@@ -29,11 +29,9 @@
 // forward part of the mesh; t never decreases, so no stretch is integrated
 // twice.
 
-uniform samplerBuffer facePlanes;
-uniform isamplerBuffer neighbors;
-uniform samplerBuffer field;
-
 //PPIRay::MarchCommon::Impl
+
+//PPIRay::TetrahedronCells::Impl
 
 //PPIRay::TransferFunction::Impl
 
@@ -44,14 +42,19 @@ uniform samplerBuffer field;
 //PPIRay::Integrate::Impl
 
 // Loop iterations a cell step may take outside its pieces (march_common_fs.glsl):
-// its own, the face loops (4 + 4, a flat cell's 4 + 4), the isovalue
-// crossings and walks.
-const int STEP_LOOPS = 17 + (ISO_MODE == 0 ? 0 : 4 * MAXIMUM_ISO_VALUES);
+// its own, reading the cell (PLANE_LOOPS + FIELD_LOOPS), the exit loop (4,
+// a flat cell's 4 + 4), the isovalue crossings and walks.
+const int STEP_LOOPS =
+  13 + PLANE_LOOPS + FIELD_LOOPS + (ISO_MODE == 0 ? 0 : 4 * MAXIMUM_ISO_VALUES);
 
 // One cell's stretch of the ray, x in [0, len] past `entry`, on which s goes
 // linearly from sFront to sBack (gradient g): the volume integrated up to
 // each isosurface crossed (at x = len (v - sFront) / (sBack - sFront)), unless
-// ISO_MODE is 2, each surface composited there, and on to the exit.
+// ISO_MODE is 2, each surface composited there, and on to the exit. The
+// crossings are those from the interval j carried in from the previous cell to
+// sBack: a surface through the entry face (the scalar jumps there with cell
+// data, or the two cells' float evaluations of a point field differ by
+// rounding) is composited once, at the entry (x clamped to 0).
 int integrateTetrahedronSegment(float sFront, float sBack, float len, vec3 g, vec3 entry,
   vec3 direction, int k, inout int j, inout vec4 color)
 {
@@ -61,17 +64,6 @@ int integrateTetrahedronSegment(float sFront, float sBack, float len, vec3 g, ve
   }
   j = j < 0 ? isoInterval(sFront, 0) : j;
   int surface = -1;
-  // Surfaces the scalar jumped across at the entry face (cell data).
-  for (int i = 0; i < MAXIMUM_ISO_VALUES; ++i)
-  {
-    int next = nextIsoCrossing(sFront, j, surface);
-    if (surface < 0)
-    {
-      break;
-    }
-    compositeIsoSurface(surface, entry, g, direction, color);
-    j = next;
-  }
   float x = 0.0;
   float sA = sFront;
   float ds = sBack - sFront;
@@ -119,12 +111,6 @@ float pixelFootprint(float t)
   return length(o1 + t * d1 - o - t * d);
 }
 
-// Plane of face f of cell t.
-vec4 facePlane(int t, int f)
-{
-  return facePlanesTexel(GEOMETRY_TEXELS * t + f);
-}
-
 // Out through a boundary face with reflex edges (its partners across its
 // three edges listed at texel `list`, ppirayReflexEdges.h), at ray
 // parameter t: the partner the ray enters within a quarter of a pixel's
@@ -144,7 +130,9 @@ int reentryAcrossEdge(int list, vec3 origin, vec3 direction, inout float t)
   {
     int c = max(across[i], 0) / FACES;
     int e = max(across[i], 0) - FACES * c;
-    vec4 pe = facePlane(c, e);
+    vec4 p[4];
+    cellPlanes(c, p);
+    vec4 pe = p[e];
     float along = dot(pe.xyz, direction);
     if (across[i] < 0 || (FLAT_CELLS && pe.w > FLAT_CELL) || !(along < 0.0))
     {
@@ -153,10 +141,9 @@ int reentryAcrossEdge(int list, vec3 origin, vec3 direction, inout float t)
     float te = max((pe.w - dot(pe.xyz, origin)) / along, t);
     vec3 y = origin + te * direction;
     float outside = -INFINITY;
-    for (int f = 1; f < 4; ++f)
+    for (int f = 0; f < 4; ++f)
     {
-      vec4 p = facePlane(c, (e + f) & 3);
-      outside = max(outside, dot(p.xyz, y) - p.w);
+      outside = f == e ? outside : max(outside, dot(p[f].xyz, y) - p[f].w);
     }
     if (te < tEntry && outside <= 1.0e-6 * abs(te))
     {
@@ -164,7 +151,7 @@ int reentryAcrossEdge(int list, vec3 origin, vec3 direction, inout float t)
       entry = across[i];
     }
   }
-  loopsLeft -= 17; // and the outer step loop's iteration
+  loopsLeft -= REENTRY_LOOPS; // and the outer step loop's iteration
   if (entry < 0 || tEntry - t > 0.25 * pixelFootprint(t))
   {
     return -1;
@@ -196,7 +183,7 @@ float outsideTriangle(vec3 a, vec3 b, vec3 c, vec3 x)
 // (n_f . x <= d_f), or, c flat (its corners stored), inside the triangle of
 // the corners other than e; the piece it is least outside of is taken, so a
 // point on an edge between pieces goes to one of them. -1: no piece (not
-// reached for a valid list). EXIT_LOOPS: 8 per piece.
+// reached for a valid list). EXIT_LOOPS: SPLIT_PIECE_LOOPS per piece.
 int splitFacePiece(int list, vec3 x)
 {
   int n = neighborsTexel(list).x;
@@ -208,10 +195,7 @@ int splitFacePiece(int list, vec3 x)
     int c = code / FACES;
     int e = code - FACES * c;
     vec4 p[4];
-    for (int f = 0; f < 4; ++f)
-    {
-      p[f] = facePlane(c, f);
-    }
+    cellPlanes(c, p);
     float outside = -INFINITY;
     if (FLAT_CELLS && p[0].w > FLAT_CELL)
     {
@@ -230,7 +214,7 @@ int splitFacePiece(int list, vec3 x)
       piece = code;
     }
   }
-  loopsLeft -= 8 * min(n, MAXIMUM_SPLIT_PIECES) + 1; // and the outer step loop's iteration
+  loopsLeft -= SPLIT_PIECE_LOOPS * min(n, MAXIMUM_SPLIT_PIECES) + 1; // and the outer step loop's iteration
   return piece;
 }
 
@@ -344,10 +328,8 @@ void main()
         break;
       }
       vec4 p[4];
-      for (int f = 0; f < 4; ++f)
-      {
-        p[f] = facePlane(cell, f);
-      }
+      vec4 g;
+      cellPlanesAndField(cell, p, g);
       int exitFace = -1;
       bool flatCell = FLAT_CELLS && p[0].w > FLAT_CELL;
       if (flatCell)
@@ -377,7 +359,6 @@ void main()
           tExit = max(tExit, t);
           float tEnd = min(tExit, tStop);
           float tFrom = max(t, tKept);
-          vec4 g = fieldTexel(FIELD_TEXELS * cell);
           if (g.w > EMPTY_CELL && tEnd > tFrom)
           {
             float sFront = dot(g.xyz, origin + tFrom * direction) + g.w;

@@ -30,10 +30,6 @@
 // crosses a folded face into the next forward part; if that walk leaves the
 // mesh, the plain walk goes on from the fold (Documentation/algorithms.md).
 
-uniform samplerBuffer hexCorners;
-uniform isamplerBuffer hexNeighbors;
-uniform samplerBuffer hexCoefficients;
-
 //PPIRay::MarchCommon::Impl
 
 // vtkHexahedron's faces, wound outward.
@@ -64,6 +60,10 @@ const int FACE[24] =
 // piece by the hexahedron mode (unless ISO_MODE is 2) and each surface
 // composited where it is crossed, with the trilinear gradient at the root
 // (c, d: coefficients; q + x r: frame coordinates; toFrame: local to frame).
+// The crossings are counted from the interval j carried in from the previous
+// cell, so a surface through the entry face (a jump of cell data, or rounding
+// between the two cells' evaluations of a point field) is composited once, at
+// the entry (cubicCrossing's nearer end).
 int integrateHexahedronSegment(vec4 w, float len, vec4 c, vec4 d, vec3 q, vec3 r, mat3 toFrame,
   vec3 entry, vec3 direction, int k, inout int j, inout vec4 color)
 {
@@ -75,18 +75,6 @@ int integrateHexahedronSegment(vec4 w, float len, vec4 c, vec4 d, vec3 q, vec3 r
   if (ISO_MODE != 0)
   {
     j = j < 0 ? isoInterval(s0, 0) : j;
-    // Surfaces the scalar jumped across at the entry face (cell data).
-    for (int i = 0; i < MAXIMUM_ISO_VALUES; ++i)
-    {
-      int next = nextIsoCrossing(s0, j, surface);
-      if (surface < 0)
-      {
-        break;
-      }
-      compositeIsoSurface(surface, entry, transpose(toFrame) * trilinearGradient(c, d, q),
-        direction, color);
-      j = next;
-    }
   }
   for (int piece = 0; piece <= extrema; ++piece)
   {

@@ -48,26 +48,39 @@ vec4 transferFunctionEntered(int k, float ds, vec4 left)
   return ds > 0.0 ? intervalTexel(k, 0) : left;
 }
 
-// Index k with s_k <= s < s_k+1 (-1 below the first point), moved from the
-// previous cell's index: the scalar is continuous along a ray for point data,
-// so this is usually zero or one step. Bounded by the number of points.
-// Its steps are taken from the loop budget.
+// Index k with s_k <= s < s_k+1 (-1 below the first point), the largest k
+// with s_k <= s, searched from the previous index: that interval, then the
+// next one towards s (the scalar is continuous along a ray for point data:
+// usually zero or one step), then bisection of what is left (a jump: cell
+// data, a new peel). Each probe narrows the bracket s_lo <= s < s_hi
+// (s_-1 = -infinity, s_n = +infinity), so at most CONTROL_SEARCH_LOOPS
+// probes whatever the jump: the lanes of a SIMD group that march together
+// take about as many as each other (a driver's loop limit counts the
+// group's iterations, not each lane's). One probe is one texel read, and
+// the loop one branch, since a software rasterizer runs every lane through
+// all the code. Its probes are taken from the loop budget.
 int controlInterval(float s, int k)
 {
-  int n = numberOfControlPoints;
-  k = clamp(k, -1, n - 1);
+  int lo = -1;
+  int hi = numberOfControlPoints;
+  int probe = clamp(k, lo, hi - 1);
   int i = 0;
-  for (; i < n && k + 1 < n && intervalEnds(k).y <= s; ++i)
+  for (; i < CONTROL_SEARCH_LOOPS && hi - lo > 1; ++i)
   {
-    ++k;
+    vec2 ends = intervalEnds(probe);
+    if (ends.x <= s && s < ends.y)
+    {
+      lo = probe;
+      break;
+    }
+    bool above = s >= ends.y;
+    lo = above ? probe + 1 : lo;
+    hi = above ? hi : probe;
+    probe = i == 0 ? (above ? probe + 1 : probe - 1) : lo + (hi - lo) / 2;
+    probe = clamp(probe, lo, hi - 1);
   }
-  int j = 0;
-  for (; j < n && k >= 0 && intervalEnds(k).x > s; ++j)
-  {
-    --k;
-  }
-  loopsLeft -= i + j; // taken after the fact from the reserve (march_common_fs.glsl)
-  return k;
+  loopsLeft -= i; // taken after the fact from the reserve (march_common_fs.glsl)
+  return lo;
 }
 
 // Walking s monotonically from the control interval k towards sEnd (ds: the

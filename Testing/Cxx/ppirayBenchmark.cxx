@@ -9,7 +9,8 @@
 //   ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]
 //                   [--views N] [--peer-views N] [--inside] [--check N]
 //                   [--transfer-function ramp|realistic|cutoff|detailed] [--breakdown]
-//                   [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]
+//                   [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,ppiray-compact,
+//                              pt,raycast,zsweep]
 //
 // --check N: after its frames, each PPIRay mapper renders the last view at
 // N x N and every pixel is compared with the CPU reference renderer (p99 and
@@ -452,7 +453,8 @@ int main(int argc, char* argv[])
         << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]"
            " [--views N] [--peer-views N] [--inside] [--check N]"
            " [--transfer-function ramp|realistic|cutoff|detailed] [--breakdown]"
-           " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,pt,raycast,zsweep]\n\n"
+           " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,ppiray-compact,pt,raycast,"
+           "zsweep]\n\n"
            "Frame time of PPIRay against VTK's unstructured volume mappers on one scene, same\n"
            "run: median ms per frame over an orbit of views after a warm-up frame.\n"
            "  --file MESH.vtu     a tetrahedral mesh and its point scalars (default: the wavelet)\n"
@@ -473,6 +475,7 @@ int main(int argc, char* argv[])
            "  --breakdown         GPU time per kind of pass (a third, untimed orbit)\n"
            "  --mappers LIST      comma-separated (default ppiray,pt,raycast): ppiray (partial\n"
            "                      pre-integration), ppiray-exact, ppiray-full, ppiray-average,\n"
+           "                      ppiray-compact (partial, TETRAHEDRON_COMPACT layout),\n"
            "                      pt (vtkProjectedTetrahedraMapper), raycast\n"
            "                      (vtkUnstructuredGridVolumeRayCastMapper), zsweep\n"
            "                      (vtkUnstructuredGridVolumeZSweepMapper)\n";
@@ -507,16 +510,20 @@ int main(int argc, char* argv[])
   {
     std::cerr << "measuring " << name << " ..." << std::endl;
     if (name == "ppiray" || name == "ppiray-exact" || name == "ppiray-average" ||
-        name == "ppiray-full")
+        name == "ppiray-full" || name == "ppiray-compact")
     {
       vtkNew<vtkUnstructuredGridGPURayCastMapper> m;
+      m->SetTetrahedronLayout(name == "ppiray-compact"
+                                ? vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_COMPACT
+                                : vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_PLANES);
       m->SetIntegrationMode(
         name == "ppiray-exact"     ? vtkUnstructuredGridGPURayCastMapper::EXACT_LINEAR
         : name == "ppiray-average" ? vtkUnstructuredGridGPURayCastMapper::AVERAGE_COLOR
         : name == "ppiray-full"    ? vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION
                                    : vtkUnstructuredGridGPURayCastMapper::PARTIAL_PRE_INTEGRATION);
-      Append(rows,
-        Measure(std::string("PPIRay ") + m->GetIntegrationModeAsString(), m, grid, o, o.Views));
+      Append(rows, Measure(std::string("PPIRay ") + m->GetIntegrationModeAsString() +
+                             (name == "ppiray-compact" ? " (compact)" : ""),
+                     m, grid, o, o.Views));
       if (name == "ppiray-full")
       {
         std::printf("FULL_PRE_INTEGRATION table %d^3 built in %.3f s\n",

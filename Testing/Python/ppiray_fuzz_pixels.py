@@ -101,6 +101,8 @@ def main():
     centre = 0.5 * (bounds[0::2] + bounds[1::2])
     planes = [(centre, np.array(case["camera"]["planes"][k], float))
               for k in range(case["mapper"]["planes"])]
+    scalars = grid.GetPointData().GetScalars() or grid.GetCellData().GetScalars()
+    scalar_range = scalars.GetRange() if scalars is not None else (0.0, 1.0)
     locator = vtkCellLocator()
     locator.SetDataSet(grid)
     locator.BuildLocator()
@@ -144,6 +146,21 @@ def main():
                 name, s, cid, t * length, (255 * opacity * rgb).round()))
         print("  in the mesh from %.6g to %.6g (%d of %d samples)" % (
             found[0][0] * length, found[-1][0] * length, len(found), args.samples))
+        if case["mapper"]["blend"] in (3, 4):
+            # vtkGPUVolumeRayCastMapper's average and additive, in the limit
+            # of samples one unit distance apart (Documentation/algorithms.md):
+            # the opacity times the scalar normalized to the array's range.
+            lo, hi = scalar_range
+            on = [min(max(prop.GetScalarOpacity().GetValue(f[1]), 0.0), 1.0) *
+                  ((f[1] - lo) / (hi - lo) if hi > lo else 1.0) for f in found]
+            spacing = length / args.samples
+            if case["mapper"]["blend"] == 3:
+                value = np.mean(on)
+            else:
+                value = sum(on) * spacing / prop.GetScalarOpacityUnitDistance()
+            print("  %s along the ray: %.1f/255" % (
+                "average" if case["mapper"]["blend"] == 3 else "sum",
+                255 * min(value, 1.0)))
     return 0
 
 

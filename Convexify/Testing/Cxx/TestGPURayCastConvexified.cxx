@@ -51,12 +51,14 @@ int Compare(const char* name, vtkUnstructuredGrid* grid, const std::array<double
   const std::array<double, 3> eye{ centre[0] + reach * direction[0],
     centre[1] + reach * direction[1], centre[2] + reach * direction[2] };
   vtkNew<vtkUnstructuredGridGPURayCastMapper> peeled;
+  ppiray_test::UseTetrahedronLayout(peeled);
   scene.Show(peeled, grid, eye, centre);
   scene.Window->Render();
   const auto peeledImage = ppiray_test::ReadRGB(scene.Window);
   const int peels = peeled->GetNumberOfPeels();
 
   vtkNew<vtkUnstructuredGridGPURayCastMapper> oneLayer;
+  ppiray_test::UseTetrahedronLayout(oneLayer);
   vtkNew<ppiray_test::MessageCollector> messages;
   oneLayer->AddObserver(vtkCommand::WarningEvent, messages);
   oneLayer->AddObserver(vtkCommand::ErrorEvent, messages);
@@ -74,6 +76,7 @@ int Compare(const char* name, vtkUnstructuredGrid* grid, const std::array<double
   // The same through the mapper: NON_CONVEX_CONVEXIFY with the filter
   // plugged in (run by the mapper, kept until the input changes).
   vtkNew<vtkUnstructuredGridGPURayCastMapper> byMode;
+  ppiray_test::UseTetrahedronLayout(byMode);
   vtkNew<vtkUnstructuredGridConvexify> plugged;
   byMode->SetNonConvexModeToConvexify();
   byMode->SetConvexifier(plugged);
@@ -135,8 +138,9 @@ int Compare(const char* name, vtkUnstructuredGrid* grid, const std::array<double
 }
 }
 
-int TestGPURayCastConvexified(int, char*[])
+int TestGPURayCastConvexified(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   int errors = 0;
   {
     auto grid = ppiray_test::TunnelAndBlock();
@@ -209,6 +213,7 @@ int TestGPURayCastConvexified(int, char*[])
     auto grid = ppiray_test::TunnelAndBlock();
     ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.7, 0.1);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    ppiray_test::UseTetrahedronLayout(mapper);
     mapper->AddObserver(vtkCommand::WarningEvent, messages);
     mapper->SetNonConvexModeToConvexify();
     mapper->SetConvexifier(convexifier);

@@ -28,6 +28,7 @@ NEW_VALUES = {
     "HexahedronMode": ("Fast", 1, "GetHexahedronMode"),
     "MaximumNumberOfPeels": (7, 7, "GetMaximumNumberOfPeels"),
     "NonConvexMode": ("Convexify", 1, "GetNonConvexMode"),
+    "TetrahedronLayout": ("Compact", 1, "GetTetrahedronLayout"),
     "PsiTableSize": (128, 128, "GetPsiTableSize"),
     "PreIntegrationTableSize": (32, 32, "GetPreIntegrationTableSize"),
     "TerminationOpacity": (0.95, 0.95, "GetTerminationOpacity"),

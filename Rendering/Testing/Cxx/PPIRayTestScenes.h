@@ -21,18 +21,51 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridGPURayCastMapper.h"
 #include "vtkUnstructuredGridVolumeMapper.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <string>
 
 namespace ppiray_test
 {
+// The tetrahedron layout a test runs with: TETRAHEDRON_COMPACT when its
+// arguments hold "--tetrahedron-layout compact" (the ".Compact" variants
+// ctest runs of the tests that read it, PPIRayTesting.cmake), else the
+// default; every PPIRay mapper a test shows (Scene::Show) or passes to
+// UseTetrahedronLayout() gets it.
+inline int& TetrahedronLayout()
+{
+  static int layout = vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_PLANES;
+  return layout;
+}
+
+inline void ReadTetrahedronLayout(int argc, char* argv[])
+{
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    if (std::strcmp(argv[i], "--tetrahedron-layout") == 0 &&
+        std::strcmp(argv[i + 1], "compact") == 0)
+    {
+      TetrahedronLayout() = vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_COMPACT;
+    }
+  }
+}
+
+inline void UseTetrahedronLayout(vtkAbstractVolumeMapper* mapper)
+{
+  if (auto* ours = vtkUnstructuredGridGPURayCastMapper::SafeDownCast(mapper))
+  {
+    ours->SetTetrahedronLayout(TetrahedronLayout());
+  }
+}
+
 using Field = std::function<double(double, double, double)>;
 using Keep = std::function<bool(int, int, int)>;
 
@@ -298,6 +331,7 @@ struct Scene
     const std::array<double, 3>& focal)
   {
     vtkUnstructuredGridVolumeMapper::SafeDownCast(mapper)->SetInputData(grid);
+    UseTetrahedronLayout(mapper);
     this->Volume->SetMapper(mapper);
     this->Renderer->GetActiveCamera()->SetPosition(eye.data());
     this->Renderer->GetActiveCamera()->SetFocalPoint(focal.data());

@@ -9,7 +9,8 @@
 // out of range: warning, the last one), cells with point ids out of range
 // (one error with their count; the other cells render as without them, in
 // the mapper and in the reference renderer), a unit distance of 0 (warning;
-// rendered with 1, in every blend mode).
+// rendered with 1, in every blend mode), a scalar array with fewer values
+// than points (error, nothing drawn).
 
 #include "PPIRayImageCompare.h"
 #include "PPIRayTestScenes.h"
@@ -43,6 +44,7 @@ Outcome RenderGrid(vtkUnstructuredGrid* grid,
   ppiray_test::Scene scene(100, 100);
   ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, unitDistance);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+  ppiray_test::UseTetrahedronLayout(mapper);
   vtkNew<ppiray_test::MessageCollector> observer;
   mapper->AddObserver(vtkCommand::ErrorEvent, observer);
   mapper->AddObserver(vtkCommand::WarningEvent, observer);
@@ -86,8 +88,9 @@ int Expect(bool condition, const char* what)
 }
 }
 
-int TestGPURayCastBadInput(int, char*[])
+int TestGPURayCastBadInput(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   const int n[3] = { 3, 3, 3 };
   const double origin[3] = { 0, 0, 0 };
   auto good = ppiray_test::VoxelTetrahedra(
@@ -287,6 +290,19 @@ int TestGPURayCastBadInput(int, char*[])
   errors += Expect(
     ic.Errors.find("infinite or NaN point coordinates") != std::string::npos && Lit(ic.Image) == 0,
     "infinite coordinate: error, nothing drawn");
+
+  // A scalar array shorter than the point list (a reader's truncated array):
+  // error naming both counts, nothing drawn, nothing read past its end.
+  vtkNew<vtkUnstructuredGrid> shortScalars;
+  shortScalars->DeepCopy(good);
+  shortScalars->GetPointData()->GetScalars()->SetNumberOfTuples(good->GetNumberOfPoints() - 3);
+  const Outcome sh = RenderGrid(shortScalars);
+  std::cout << "short scalar array: " << sh.Errors << "\n";
+  errors += Expect(
+    sh.Errors.find(std::to_string(good->GetNumberOfPoints() - 3) + " values for " +
+                   std::to_string(good->GetNumberOfPoints()) + " points") != std::string::npos &&
+      Lit(sh.Image) == 0,
+    "short scalar array: error, nothing drawn");
 
   // A 3-component array (s, 0, 0): magnitude |s| = s renders as the scalar;
   // component 7 of 3: warning, component 2 (zero everywhere: dark).

@@ -218,6 +218,7 @@ int Run(const SceneCase& scene)
   ppiray_test::Scene window(Size, Size);
   scene.TransferFunction(window.Property);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+  ppiray_test::UseTetrahedronLayout(mapper);
   mapper->SetScalarModeToUsePointFieldData();
   if (scene.CellScalars)
   {
@@ -313,8 +314,9 @@ int Run(const SceneCase& scene)
 }
 }
 
-int TestGPURayCastBruteForce(int, char*[])
+int TestGPURayCastBruteForce(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   std::vector<SceneCase> scenes;
   const double toPercent = 100.0 / 1.3; // Blob spans about [0, 1.3]
   scenes.push_back({ "thin opacity spike", Block(6, All, toPercent), "s", false,

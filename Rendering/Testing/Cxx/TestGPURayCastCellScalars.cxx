@@ -12,6 +12,7 @@
 
 int TestGPURayCastCellScalars(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   const int n[3] = { 6, 6, 6 };
   const double origin[3] = { 0, 0, 0 };
   auto grid = ppiray_test::VoxelTetrahedra(
@@ -41,6 +42,7 @@ int TestGPURayCastCellScalars(int argc, char* argv[])
   ppiray_test::Scene scene(300, 300);
   ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+  ppiray_test::UseTetrahedronLayout(mapper);
   mapper->SetInputData(grid);
   mapper->SetScalarModeToUseCellFieldData();
   mapper->SelectScalarArray("centroid");

@@ -45,6 +45,7 @@ struct ClippingScene
 
 int TestGPURayCastClipping(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   const int n[3] = { 8, 8, 8 };
   const double origin[3] = { 0, 0, 0 };
   auto all = [](int, int, int) { return true; };
@@ -80,6 +81,7 @@ int TestGPURayCastClipping(int argc, char* argv[])
     grid->GetPointData()->GetScalars()->GetRange(range);
     ppiray_test::SmoothTransferFunction(scene.Property, range[0], range[1], 0.7, 0.15);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    ppiray_test::UseTetrahedronLayout(mapper);
     vtkNew<ppiray_test::MessageCollector> messages;
     mapper->AddObserver(vtkCommand::WarningEvent, messages);
     mapper->AddObserver(vtkCommand::ErrorEvent, messages);

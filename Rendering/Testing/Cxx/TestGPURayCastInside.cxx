@@ -41,6 +41,7 @@ struct InsideScene
 
 int TestGPURayCastInside(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   // [0, 1]^3 in 8^3 voxels, a tunnel of 2 x 2 voxels removed along x at
   // mid-height: rays from inside leave into the tunnel and re-enter.
   const int n[3] = { 8, 8, 8 };
@@ -102,6 +103,7 @@ int TestGPURayCastInside(int argc, char* argv[])
     ppiray_test::SmoothTransferFunction(
       scene.Property, 2 * range[0] - range[1], range[1], 0.7, 0.15);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    ppiray_test::UseTetrahedronLayout(mapper);
     vtkNew<ppiray_test::MessageCollector> messages;
     mapper->AddObserver(vtkCommand::WarningEvent, messages);
     mapper->AddObserver(vtkCommand::ErrorEvent, messages);

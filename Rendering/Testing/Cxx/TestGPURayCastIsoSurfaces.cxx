@@ -282,6 +282,7 @@ int Fail(const std::string& what)
 
 int TestGPURayCastIsoSurfaces(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   int errors = 0;
   auto tets = Tetrahedra();
   auto hexes = Parallelepipeds();
@@ -291,11 +292,13 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
   // the max is reached on silhouette pixels, where a ray grazing a surface
   // hits it in one renderer and misses it in the other.
   vtkNew<vtkUnstructuredGridGPURayCastMapper> tetMapper;
+  ppiray_test::UseTetrahedronLayout(tetMapper);
   tetMapper->SetBlendModeToIsoSurface();
   const Result tetIso = RenderAndCompare(tetMapper, tets, false);
   Report("tetrahedra, surfaces", tetIso.Error);
 
   vtkNew<vtkUnstructuredGridGPURayCastMapper> hexMapper;
+  ppiray_test::UseTetrahedronLayout(hexMapper);
   hexMapper->SetBlendModeToIsoSurface();
   const Result hexIso = RenderAndCompare(hexMapper, hexes, false);
   Report("hexahedra natively, surfaces", hexIso.Error);
@@ -305,6 +308,7 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
   }
 
   vtkNew<vtkUnstructuredGridGPURayCastMapper> embeddedMapper;
+  ppiray_test::UseTetrahedronLayout(embeddedMapper);
   embeddedMapper->EmbedIsoSurfacesOn();
   const Result hexEmbedded = RenderAndCompare(embeddedMapper, hexes, true);
   Report("hexahedra natively, surfaces in the volume", hexEmbedded.Error);
@@ -321,6 +325,7 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
   // per tetrahedron) against the native ones (trilinear patches, trilinear
   // gradient).
   vtkNew<vtkUnstructuredGridGPURayCastMapper> subdividedMapper;
+  ppiray_test::UseTetrahedronLayout(subdividedMapper);
   subdividedMapper->SetBlendModeToIsoSurface();
   subdividedMapper->SetHexahedronModeToSubdivide();
   const Result subdivided = RenderAndCompare(subdividedMapper, hexes, false, nullptr, true);
@@ -361,6 +366,7 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
     cells->GetPointData()->Initialize();
     cells->GetCellData()->SetScalars(r);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    ppiray_test::UseTetrahedronLayout(mapper);
     mapper->SetBlendModeToIsoSurface();
     const Result cellIso = RenderAndCompare(mapper, cells, false, "cellR");
     Report("tetrahedra, cell scalars, surfaces", cellIso.Error);
@@ -375,6 +381,9 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
   // (Documentation/hardening.md gives the error then).
   {
     vtkNew<vtkUnstructuredGridGPURayCastMapper> hiddenTets, hiddenHexes, nanCells;
+    ppiray_test::UseTetrahedronLayout(hiddenTets);
+    ppiray_test::UseTetrahedronLayout(hiddenHexes);
+    ppiray_test::UseTetrahedronLayout(nanCells);
     for (vtkUnstructuredGridGPURayCastMapper* m :
       { hiddenTets.Get(), hiddenHexes.Get(), nanCells.Get() })
     {
@@ -410,6 +419,7 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
     IsoProperty(scene.Property);
     scene.Property->GetIsoSurfaceValues()->SetNumberOfContours(0);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+    ppiray_test::UseTetrahedronLayout(mapper);
     vtkNew<ppiray_test::MessageCollector> messages;
     mapper->AddObserver(vtkCommand::WarningEvent, messages);
     mapper->SetBlendModeToIsoSurface();

@@ -6,6 +6,8 @@
 // rays that ran out in further passes (march_common_fs.glsl); each image
 // must equal the CPU reference, and the exact-linear and native hexahedron
 // modes (many loop iterations per piece) must have needed continuations.
+// Random cell scalars make each step jump across hundreds of control points,
+// a different number in each pixel (the fuzz driver's seed 3, case 5637).
 // With the opacity zero below 0.7 over a field s = x, the colour nodes are
 // crossed inside one transparent run by cell segments that lie in it whole
 // and are not integrated (transparentSpan): those images need no
@@ -14,8 +16,11 @@
 #include "PPIRayImageCompare.h"
 #include "PPIRayReferenceImage.h"
 #include "PPIRayTestScenes.h"
+#include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkDoubleArray.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include <algorithm>
@@ -63,6 +68,24 @@ void ManyNodes(vtkVolumeProperty* property, double transparentBelow)
   property->SetColor(color);
   property->SetScalarOpacity(opacity);
   property->SetScalarOpacityUnitDistance(0.5);
+}
+
+// The grid with a value per cell drawn from [0, 1) (Hashed) in place of its
+// point scalars: along a ray the scalar jumps across hundreds of control
+// points at every face, a different number in each pixel.
+vtkSmartPointer<vtkUnstructuredGrid> RandomCellScalars(vtkUnstructuredGrid* grid)
+{
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->ShallowCopy(grid);
+  out->GetPointData()->Initialize();
+  vtkNew<vtkDoubleArray> values;
+  values->SetName("c");
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    values->InsertNextValue(Hashed(static_cast<int>(c), 5));
+  }
+  out->GetCellData()->SetScalars(values);
+  return out;
 }
 
 // continuations: 1 the image must have needed some, -1 none, 0 either.
@@ -141,6 +164,13 @@ int TestGPURayCastLoopBudget(int, char*[])
   vtkNew<vtkUnstructuredGridGPURayCastMapper> accurate;
   accurate->SetHexahedronMode(vtkUnstructuredGridGPURayCastMapper::HEXAHEDRON_ACCURATE);
   errors += Check("native hexahedra, accurate", hexahedra, accurate, 0.0, 1);
+  // Cell scalars at random: each step looks the control interval up afresh
+  // (a search of fixed length, not a walk from the last one; walks of
+  // different lengths in neighbouring pixels made a SIMD group of llvmpipe
+  // exceed its loop limit where no single ray exceeded the budget).
+  vtkNew<vtkUnstructuredGridGPURayCastMapper> cellData;
+  errors +=
+    Check("tetrahedra, random cell scalars", RandomCellScalars(tetrahedra), cellData, 0.0, 0);
   // s = x: each cell's segment spans 1/16 of the range, about 180 colour
   // nodes, and the cells below 0.7 are transparent whole.
   auto ramp = [](double x, double, double) { return x; };

@@ -12,11 +12,13 @@
 
 int TestGPURayCastNonConvex(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   auto grid = ppiray_test::TunnelAndBlock();
 
   ppiray_test::Scene scene(300, 300);
   ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.7, 0.1);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+  ppiray_test::UseTetrahedronLayout(mapper);
   mapper->SetInputData(grid);
   scene.Volume->SetMapper(mapper);
   vtkCamera* camera = scene.Renderer->GetActiveCamera();

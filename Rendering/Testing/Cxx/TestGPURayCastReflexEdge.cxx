@@ -27,8 +27,9 @@
 #include <cmath>
 #include <cstdio>
 
-int TestGPURayCastReflexEdge(int, char*[])
+int TestGPURayCastReflexEdge(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   const int size = 64;
   const int n[3] = { 2, 4, 4 };
   const double origin[3] = { 0.0, -1.0, 0.0 };
@@ -39,6 +40,7 @@ int TestGPURayCastReflexEdge(int, char*[])
   ppiray_test::Scene scene(size, size);
   ppiray_test::SmoothTransferFunction(scene.Property, -1.0, 4.0, 0.8, 0.5);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+  ppiray_test::UseTetrahedronLayout(mapper);
   scene.Show(mapper, grid, { 0.5, -3.0, 3.0 }, { 0.5, 0.0, 1.0 });
   vtkCamera* camera = scene.Renderer->GetActiveCamera();
   const double a = 30.0 * 3.14159265358979323846 / 180.0;

@@ -33,6 +33,7 @@ double RenderAndCheck(vtkUnstructuredGrid* grid, const View& view, const double 
   ppiray_test::Scene scene(size, size);
   ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
+  ppiray_test::UseTetrahedronLayout(mapper);
   mapper->SetInputData(grid);
   scene.Volume->SetMapper(mapper);
   vtkCamera* camera = scene.Renderer->GetActiveCamera();
@@ -88,8 +89,9 @@ void MoveBoundaryOffLattice(vtkUnstructuredGrid* grid, const double origin[3])
 }
 }
 
-int TestGPURayCastStability(int, char*[])
+int TestGPURayCastStability(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   const int n[3] = { 4, 4, 4 };
   const double origin[3] = { 0, 0, 0 };
   auto grid = ppiray_test::VoxelTetrahedra(
