@@ -2,6 +2,7 @@
 // field: every gradient is exact, each face plane passes through its three
 // points with the fourth inside, neighbours are mutual, boundary triangles
 // wound outward; a flat tetrahedron is skipped and NaN scalars marked empty.
+// The COMPACT layout's arrays against the grid (CheckCompactLayout).
 
 #include "vtkCellArray.h"
 #include "vtkDataSetTriangleFilter.h"
@@ -17,12 +18,136 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <string>
 
 namespace
 {
 double LinearField(const double x[3])
 {
   return 2.0 * x[0] - 3.0 * x[1] + 0.5 * x[2] + 7.0;
+}
+
+// COMPACT layout of three separate tetrahedra, positive, inverted (two ids
+// swapped) and flat, against the grid itself: corner ids and flags (the
+// signed volume here in double), point texels (x - origin, s; 0 for NaN),
+// cell values (point data: 0, or transparent beside a NaN; cell data: the
+// value, transparent for NaN); no planes or field stored.
+int CheckCompactLayout()
+{
+  const double corners[12][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 3, 0, 0 },
+    { 4, 0, 0 }, { 3, 1, 0 }, { 3, 0, 1 }, { 6, 0, 0 }, { 7, 0, 0 }, { 6, 1, 0 }, { 7, 1, 0 } };
+  vtkNew<vtkUnstructuredGrid> grid;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> pointScalars;
+  for (int p = 0; p < 12; ++p)
+  {
+    points->InsertNextPoint(corners[p]);
+    pointScalars->InsertNextValue(p == 5 ? std::numeric_limits<double>::quiet_NaN() : 0.25 * p);
+  }
+  grid->SetPoints(points);
+  const vtkIdType cells[3][4] = { { 0, 1, 2, 3 }, { 5, 4, 6, 7 }, { 8, 9, 10, 11 } };
+  for (const auto& ids : cells)
+  {
+    grid->InsertNextCell(VTK_TETRA, 4, ids);
+  }
+  vtkNew<vtkTetrahedralCellTextures> compact;
+  compact->SetLayout(vtkTetrahedralCellTextures::COMPACT);
+  int errors = 0;
+  auto fail = [&errors](const std::string& what)
+  {
+    std::cerr << "compact layout: " << what << "\n";
+    ++errors;
+  };
+  if (!compact->BuildGeometry(grid) || !compact->BuildField(pointScalars, false, 0))
+  {
+    fail("build failed");
+    return errors;
+  }
+  if (!compact->GetFacePlanes().empty() || !compact->GetField().empty())
+  {
+    fail("planes or field stored");
+  }
+  const vtkIdType n = compact->GetNumberOfTetrahedra();
+  const auto& ids = compact->GetCellCorners();
+  const auto& texels = compact->GetPointTexels();
+  const auto& values = compact->GetCellValues();
+  if (ids.size() != static_cast<size_t>(4 * n) || values.size() != static_cast<size_t>(n) ||
+      texels.size() != 4 * 12)
+  {
+    fail("array sizes");
+    return errors;
+  }
+  const int flags =
+    vtkTetrahedralCellTextures::InvertedCorners() | vtkTetrahedralCellTextures::FlatCorners();
+  const double* origin = compact->GetOrigin();
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    const vtkIdType cell = compact->GetCellIds()[t];
+    const vtkIdType* pts = cells[cell];
+    for (int v = 0; v < 4; ++v)
+    {
+      if ((v < 3 ? ids[4 * t + v] : ids[4 * t + 3] & ~flags) != pts[v])
+      {
+        fail("cell " + std::to_string(cell) + " corner " + std::to_string(v));
+      }
+    }
+    double e[3][3];
+    for (int v = 0; v < 3; ++v)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        e[v][i] = corners[pts[v + 1]][i] - corners[pts[0]][i];
+      }
+    }
+    const double volume6 = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+                           e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                           e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+    const bool inverted = (ids[4 * t + 3] & vtkTetrahedralCellTextures::InvertedCorners()) != 0;
+    const bool flat = (ids[4 * t + 3] & vtkTetrahedralCellTextures::FlatCorners()) != 0;
+    if (flat != (volume6 == 0.0) || (!flat && inverted != (volume6 < 0.0)))
+    {
+      fail("flags of cell " + std::to_string(cell));
+    }
+    const bool nearNaN = cell == 1;
+    const float expected =
+      flat || nearNaN ? vtkTetrahedralCellTextures::TransparentCellOffset() : 0.0f;
+    if (values[t] != expected)
+    {
+      fail("point-data value of cell " + std::to_string(cell));
+    }
+  }
+  for (int p = 0; p < 12; ++p)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      if (std::abs(texels[4 * p + i] - (corners[p][i] - origin[i])) > 1e-6)
+      {
+        fail("point " + std::to_string(p) + " coordinates");
+      }
+    }
+    if (texels[4 * p + 3] != (p == 5 ? 0.0f : static_cast<float>(0.25 * p)))
+    {
+      fail("point " + std::to_string(p) + " scalar");
+    }
+  }
+  vtkNew<vtkDoubleArray> cellScalars;
+  cellScalars->InsertNextValue(1.5);
+  cellScalars->InsertNextValue(std::numeric_limits<double>::quiet_NaN());
+  cellScalars->InsertNextValue(2.5);
+  compact->BuildField(cellScalars, true, 0);
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    const vtkIdType cell = compact->GetCellIds()[t];
+    const bool flat = (ids[4 * t + 3] & vtkTetrahedralCellTextures::FlatCorners()) != 0;
+    const float expected = flat || cell == 1 ? vtkTetrahedralCellTextures::TransparentCellOffset()
+                                             : static_cast<float>(cellScalars->GetValue(cell));
+    if (compact->GetCellValues()[t] != expected || compact->GetPointTexels()[4 * 3 + 3] != 0.0f)
+    {
+      fail("cell-data value of cell " + std::to_string(cell));
+    }
+  }
+  std::cout << "compact layout: " << n << " tetrahedra checked\n";
+  return errors;
 }
 }
 
@@ -156,5 +281,6 @@ int TestTetrahedralCellTextures(int, char*[])
       ++errors;
     }
   }
+  errors += CheckCompactLayout();
   return errors == 0 ? 0 : 1;
 }
