@@ -51,7 +51,6 @@ int Compare(const char* name, vtkUnstructuredGrid* grid, const std::array<double
   const std::array<double, 3> eye{ centre[0] + reach * direction[0],
     centre[1] + reach * direction[1], centre[2] + reach * direction[2] };
   vtkNew<vtkUnstructuredGridGPURayCastMapper> peeled;
-  ppiray_test::UseTetrahedronLayout(peeled);
   scene.Show(peeled, grid, eye, centre);
   scene.Window->Render();
   const auto peeledImage = ppiray_test::ReadRGB(scene.Window);
@@ -213,7 +212,6 @@ int TestGPURayCastConvexified(int argc, char* argv[])
     auto grid = ppiray_test::TunnelAndBlock();
     ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.7, 0.1);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-    ppiray_test::UseTetrahedronLayout(mapper);
     mapper->AddObserver(vtkCommand::WarningEvent, messages);
     mapper->SetNonConvexModeToConvexify();
     mapper->SetConvexifier(convexifier);

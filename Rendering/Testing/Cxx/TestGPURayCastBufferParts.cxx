@@ -46,7 +46,6 @@ int Split(const char* what, vtkUnstructuredGrid* grid, int hexahedronMode, vtkId
   ppiray_test::Scene scene(120, 120);
   ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-  ppiray_test::UseTetrahedronLayout(mapper);
   mapper->SetHexahedronMode(hexahedronMode);
   vtkNew<ppiray_test::MessageCollector> messages;
   mapper->AddObserver(vtkCommand::ErrorEvent, messages);
@@ -100,7 +99,6 @@ int TestGPURayCastBufferParts(int argc, char* argv[])
     ppiray_test::Scene scene(120, 120);
     ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.2);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-    ppiray_test::UseTetrahedronLayout(mapper);
     vtkNew<ppiray_test::MessageCollector> messages;
     mapper->AddObserver(vtkCommand::ErrorEvent, messages);
     mapper->SetMaximumBufferTexels(100);

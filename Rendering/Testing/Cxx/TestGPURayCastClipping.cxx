@@ -81,7 +81,6 @@ int TestGPURayCastClipping(int argc, char* argv[])
     grid->GetPointData()->GetScalars()->GetRange(range);
     ppiray_test::SmoothTransferFunction(scene.Property, range[0], range[1], 0.7, 0.15);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-    ppiray_test::UseTetrahedronLayout(mapper);
     vtkNew<ppiray_test::MessageCollector> messages;
     mapper->AddObserver(vtkCommand::WarningEvent, messages);
     mapper->AddObserver(vtkCommand::ErrorEvent, messages);

@@ -292,13 +292,11 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
   // the max is reached on silhouette pixels, where a ray grazing a surface
   // hits it in one renderer and misses it in the other.
   vtkNew<vtkUnstructuredGridGPURayCastMapper> tetMapper;
-  ppiray_test::UseTetrahedronLayout(tetMapper);
   tetMapper->SetBlendModeToIsoSurface();
   const Result tetIso = RenderAndCompare(tetMapper, tets, false);
   Report("tetrahedra, surfaces", tetIso.Error);
 
   vtkNew<vtkUnstructuredGridGPURayCastMapper> hexMapper;
-  ppiray_test::UseTetrahedronLayout(hexMapper);
   hexMapper->SetBlendModeToIsoSurface();
   const Result hexIso = RenderAndCompare(hexMapper, hexes, false);
   Report("hexahedra natively, surfaces", hexIso.Error);
@@ -308,7 +306,6 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
   }
 
   vtkNew<vtkUnstructuredGridGPURayCastMapper> embeddedMapper;
-  ppiray_test::UseTetrahedronLayout(embeddedMapper);
   embeddedMapper->EmbedIsoSurfacesOn();
   const Result hexEmbedded = RenderAndCompare(embeddedMapper, hexes, true);
   Report("hexahedra natively, surfaces in the volume", hexEmbedded.Error);
@@ -325,7 +322,6 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
   // per tetrahedron) against the native ones (trilinear patches, trilinear
   // gradient).
   vtkNew<vtkUnstructuredGridGPURayCastMapper> subdividedMapper;
-  ppiray_test::UseTetrahedronLayout(subdividedMapper);
   subdividedMapper->SetBlendModeToIsoSurface();
   subdividedMapper->SetHexahedronModeToSubdivide();
   const Result subdivided = RenderAndCompare(subdividedMapper, hexes, false, nullptr, true);
@@ -366,7 +362,6 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
     cells->GetPointData()->Initialize();
     cells->GetCellData()->SetScalars(r);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-    ppiray_test::UseTetrahedronLayout(mapper);
     mapper->SetBlendModeToIsoSurface();
     const Result cellIso = RenderAndCompare(mapper, cells, false, "cellR");
     Report("tetrahedra, cell scalars, surfaces", cellIso.Error);
@@ -381,9 +376,6 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
   // (Documentation/hardening.md gives the error then).
   {
     vtkNew<vtkUnstructuredGridGPURayCastMapper> hiddenTets, hiddenHexes, nanCells;
-    ppiray_test::UseTetrahedronLayout(hiddenTets);
-    ppiray_test::UseTetrahedronLayout(hiddenHexes);
-    ppiray_test::UseTetrahedronLayout(nanCells);
     for (vtkUnstructuredGridGPURayCastMapper* m :
       { hiddenTets.Get(), hiddenHexes.Get(), nanCells.Get() })
     {
@@ -419,7 +411,6 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
     IsoProperty(scene.Property);
     scene.Property->GetIsoSurfaceValues()->SetNumberOfContours(0);
     vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-    ppiray_test::UseTetrahedronLayout(mapper);
     vtkNew<ppiray_test::MessageCollector> messages;
     mapper->AddObserver(vtkCommand::WarningEvent, messages);
     mapper->SetBlendModeToIsoSurface();

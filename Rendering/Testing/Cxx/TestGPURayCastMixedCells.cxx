@@ -243,7 +243,6 @@ int TestGPURayCastMixedCells(int argc, char* argv[])
   ppiray_test::Scene scene(300, 300);
   ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.3, 0.8, 0.15);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-  ppiray_test::UseTetrahedronLayout(mapper);
   mapper->SetHexahedronModeToSubdivide(); // the split path, also for the voxels below
   scene.Show(mapper, grid, { 2.0, 1.3, 2.4 }, { 0.5, 0.5, 0.5 });
   scene.Window->Render();

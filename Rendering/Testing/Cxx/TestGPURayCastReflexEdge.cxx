@@ -40,7 +40,6 @@ int TestGPURayCastReflexEdge(int argc, char* argv[])
   ppiray_test::Scene scene(size, size);
   ppiray_test::SmoothTransferFunction(scene.Property, -1.0, 4.0, 0.8, 0.5);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-  ppiray_test::UseTetrahedronLayout(mapper);
   scene.Show(mapper, grid, { 0.5, -3.0, 3.0 }, { 0.5, 0.0, 1.0 });
   vtkCamera* camera = scene.Renderer->GetActiveCamera();
   const double a = 30.0 * 3.14159265358979323846 / 180.0;
