@@ -7,8 +7,10 @@ Wavelet -> Tetrahedralize (40,000 tetrahedra) shown as PPIRay Volume:
     renders: the image matches the second baseline, the transfer function was
     uploaded again, geometry and field were not;
  3. a mapper property alone (PsiTableSize): nothing re-uploaded;
- 4. an interactive (LOD) render then a still render: the still image is the
-    full-quality one of step 2;
+ 4. interactive renders below and above the LOD threshold, then a still
+    render: below it the mapper's image sample distance follows its rule from
+    the allocated time ParaView lowers; the still image is the full-quality
+    one of step 2, at distance 1;
  5. an opaque slice and outline in the same view: matches the third baseline;
  6. PPIRay Blend Mode "Isosurfaces" with two Isosurface Values, shaded:
     matches the fourth baseline; the mapper is in ISOSURFACE_BLEND and no cell
@@ -19,8 +21,11 @@ Wavelet -> Tetrahedralize (40,000 tetrahedra) shown as PPIRay Volume:
 
 Usage: pvbatch TestPPIRayRepresentation.py PLUGIN BASELINE_DIR TEMPORARY_DIR
 """
+import math
 import os
 import sys
+
+import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import ppiray_pvtest as pt  # noqa: E402
@@ -41,6 +46,27 @@ from paraview.simple import (  # noqa: E402
 def counts(mapper):
     return (mapper.GetGeometryUploadCount(), mapper.GetFieldUploadCount(),
             mapper.GetTransferFunctionUploadCount())
+
+
+def last_frame_rgb(view):
+    """(height, width, 3) uint8 of the view's last frame, not rendered again,
+    in read_rgb's row order."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(view.GetRenderWindow())
+    grab.ReadFrontBufferOff()
+    grab.ShouldRerenderOff()
+    grab.Update()
+    width, height, _ = grab.GetOutput().GetDimensions()
+    rgba = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
+    return rgba.reshape(height, width, -1)[:, :, :3]
+
+
+def lit_pixels(rgb, background=(0.32, 0.34, 0.43)):
+    """Pixels more than 2/255 from the background in some channel."""
+    import numpy
+    return numpy.abs(rgb.astype(float) - 255.0 * numpy.array(background)).max(axis=2) > 2.0
 
 
 def main(plugin, baselines, temporary):
@@ -103,10 +129,52 @@ def main(plugin, baselines, temporary):
     if third != second:
         failures.append("a mapper property re-uploaded cell data: %s -> %s" % (second, third))
 
-    # 4. Interactive render with LOD, then a still render at full quality.
+    # 4. Interactive renders, then a still render at full quality. ParaView
+    # raises the window's desired update rate for an interactive render
+    # (vtkPVRenderView::InteractiveRender), so the volume's allocated time T
+    # falls. Below the LOD threshold the mapper renders the interactive frame
+    # itself, AutoAdjustSampleDistances setting the image sample distance
+    # d <- clamp(d sqrt(t / T), 1, 10) from the last frame's time t; above it
+    # ParaView shows its LOD geometry. A still render (T of minutes) brings d
+    # back to 1.
+    view.LODThreshold = 1.0e6
+    volume = display.GetClientSideObject().GetActiveRepresentation().GetActor()
+    d, t = mapper.GetImageSampleDistance(), mapper.GetTimeToDraw()
+    view.SMProxy.InteractiveRender()
+    allocated = volume.GetAllocatedRenderTime()
+    rate = view.GetRenderWindow().GetDesiredUpdateRate()
+    expected = min(max(d * math.sqrt(t / allocated), 1.0), 10.0)
+    print("interactive render: desired update rate %g, allocated %.4f s, last frame %.4f s, "
+          "image sample distance %.3f -> %.3f" % (rate, allocated, t, d,
+                                                  mapper.GetImageSampleDistance()), flush=True)
+    if d != 1.0 or not rate >= 1.0 or not allocated < 1.0:
+        failures.append("an interactive render did not lower the allocated time: distance %g "
+                        "before, rate %g, allocated %g s" % (d, rate, allocated))
+    # The interactive frame against step 2's still image of the same view: the
+    # same silhouette (1 %), and colours within what resampling a smooth field
+    # at the coarser distance and scaling it up bilinearly changes (at d = 4
+    # TestGPURayCastLevelOfDetail sees max 14/255).
+    interactive = last_frame_rgb(view).astype(float)
+    still = pt.read_rgb(os.path.join(temporary, "TestPPIRayRepresentationChanged.png"))
+    still = still.astype(float)
+    lit, lit_still = int(lit_pixels(interactive).sum()), int(lit_pixels(still).sum())
+    difference = abs(interactive - still).max(axis=2)
+    p99, largest = numpy.percentile(difference, 99), difference.max()
+    print("interactive frame against the still one: %d and %d lit pixels, p99 %.1f, max %.1f /255"
+          % (lit, lit_still, p99, largest), flush=True)
+    if abs(lit - lit_still) > 0.01 * lit_still or p99 > 2.0 or largest > 16.0:
+        failures.append("interactive frame differs from the still one: %d and %d lit pixels, "
+                        "p99 %.1f, max %.1f /255" % (lit, lit_still, p99, largest))
+    # The distance is stored as a float: 1e-6 relative.
+    if abs(mapper.GetImageSampleDistance() - expected) > 1.0e-6 * expected:
+        failures.append("interactive image sample distance %g, expected %g"
+                        % (mapper.GetImageSampleDistance(), expected))
     view.LODThreshold = 0.0
     view.SMProxy.InteractiveRender()
     check_image(view, "TestPPIRayRepresentationChanged")
+    if mapper.GetImageSampleDistance() != 1.0:
+        failures.append("a still render after interactive ones kept image sample distance %g"
+                        % mapper.GetImageSampleDistance())
     if counts(mapper)[:2] != first[:2]:
         failures.append("an interactive render re-uploaded cell data: %s" % (counts(mapper),))
 
