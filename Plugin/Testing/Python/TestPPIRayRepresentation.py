@@ -151,9 +151,11 @@ def main(plugin, baselines, temporary):
         failures.append("an interactive render did not lower the allocated time: distance %g "
                         "before, rate %g, allocated %g s" % (d, rate, allocated))
     # The interactive frame against step 2's still image of the same view: the
-    # same silhouette (1 %), and colours within what resampling a smooth field
-    # at the coarser distance and scaling it up bilinearly changes (at d = 4
-    # TestGPURayCastLevelOfDetail sees max 14/255).
+    # same silhouette (1 %), colours within what sampling the rays d times
+    # coarser and scaling up bilinearly changes, which grows with d (this
+    # scene at d = 2, 3, 4, 6 set by hand: p99 1, 2, 3, 6 and max 4, 7, 10,
+    # 13 /255): p99 <= max(2, d), max <= 4 d + 1.
+    distance = mapper.GetImageSampleDistance()
     interactive = last_frame_rgb(view).astype(float)
     still = pt.read_rgb(os.path.join(temporary, "TestPPIRayRepresentationChanged.png"))
     still = still.astype(float)
@@ -162,9 +164,11 @@ def main(plugin, baselines, temporary):
     p99, largest = numpy.percentile(difference, 99), difference.max()
     print("interactive frame against the still one: %d and %d lit pixels, p99 %.1f, max %.1f /255"
           % (lit, lit_still, p99, largest), flush=True)
-    if abs(lit - lit_still) > 0.01 * lit_still or p99 > 2.0 or largest > 16.0:
-        failures.append("interactive frame differs from the still one: %d and %d lit pixels, "
-                        "p99 %.1f, max %.1f /255" % (lit, lit_still, p99, largest))
+    if (abs(lit - lit_still) > 0.01 * lit_still or p99 > max(2.0, distance)
+            or largest > 4.0 * distance + 1.0):
+        failures.append("interactive frame (distance %.2f) differs from the still one: %d and %d "
+                        "lit pixels, p99 %.1f, max %.1f /255"
+                        % (distance, lit, lit_still, p99, largest))
     # The distance is stored as a float: 1e-6 relative.
     if abs(mapper.GetImageSampleDistance() - expected) > 1.0e-6 * expected:
         failures.append("interactive image sample distance %g, expected %g"
