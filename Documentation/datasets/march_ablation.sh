@@ -13,6 +13,9 @@
 #   one-piece  - each segment one piece, no split at control points
 #                (control interval walk, two transfer-function lookups, Psi)
 #   no-psi     - the Psi table lookup replaced by arithmetic
+#   no-tf-texels - the transfer function's values and slopes not read (colour
+#                and attenuation from arithmetic; the control points, their
+#                ends texel and the splits as shipped)
 # Environment: ROUNDS (3), WAVELETS ("8 32"), TF (realistic).
 set -euo pipefail
 here="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -70,10 +73,19 @@ replace "$glsl/piece_ppi_fs.glsl" "float psi = texture(psiTable, uv).r;" \
 variant no-psi
 cp "$work/piece_ppi_fs.glsl" "$glsl/piece_ppi_fs.glsl"
 
+cp "$glsl/transfer_function_fs.glsl" "$work/transfer_function_fs.glsl"
+replace "$glsl/transfer_function_fs.glsl" \
+  "  return intervalTexel(k, 0) + intervalTexel(k, 1) * (clamp(s, ends.x, ends.y) - ends.x);" \
+  "  return vec4(0.5, 0.4, 0.3, 0.01) + 0.001 * float(k) * (clamp(s, ends.x, ends.y) - ends.x);"
+replace "$glsl/transfer_function_fs.glsl" "  return ds > 0.0 ? intervalTexel(k, 0) : left;" \
+  "  return ds > 0.0 ? vec4(0.5, 0.4, 0.3, 0.01) : left;"
+variant no-tf-texels
+cp "$work/transfer_function_fs.glsl" "$glsl/transfer_function_fs.glsl"
+
 bench="$work/build/bin/ppirayBenchmark"
 for round in $(seq 1 "${ROUNDS:-3}"); do
   for w in ${WAVELETS:-8 32}; do
-    for v in reference traversal one-piece no-psi; do
+    for v in reference traversal one-piece no-psi no-tf-texels; do
       ms=$(LD_LIBRARY_PATH="$work/$v/lib" "$bench" --wavelet "$w" --mappers ppiray --views 8 \
         --transfer-function "${TF:-realistic}" --breakdown 2>/dev/null |
         awk -F'|' '$2 ~ /^ march / { gsub(/ /, "", $3); print $3 }')
