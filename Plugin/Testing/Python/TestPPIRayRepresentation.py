@@ -65,7 +65,6 @@ def last_frame_rgb(view):
 
 def lit_pixels(rgb, background=(0.32, 0.34, 0.43)):
     """Pixels more than 2/255 from the background in some channel."""
-    import numpy
     return numpy.abs(rgb.astype(float) - 255.0 * numpy.array(background)).max(axis=2) > 2.0
 
 
