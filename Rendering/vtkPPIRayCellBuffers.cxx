@@ -39,11 +39,12 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
   // Listed exit faces: split boundary faces (convexified grids) and faces
   // with reflex edges; the search at one is taken from the loop budget after
   // the fact (EXIT_LOOPS, march_common_fs.glsl).
-  // A piece is one cell's planes and a loop over them; a reflex edge's
-  // search three of those and its own loop.
+  // A piece is one iteration of the search's loop, with one cell's planes
+  // and a loop over its four faces; a reflex edge's search is three of those,
+  // and the step loop's iteration that reached the face.
   const Features features = this->GetFeatures();
   const int pieces = features.MaximumSplitPieces;
-  const int pieceLoops = layout.PlaneLoops + 4;
+  const int pieceLoops = 1 + layout.PlaneLoops + 4;
   const int reentryLoops = 1 + 3 * pieceLoops;
   glsl << "const int PLANE_LOOPS = " << layout.PlaneLoops << ";\n"
        << "const int FIELD_LOOPS = " << layout.FieldLoops << ";\n"

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 //------------------------------------------------------------------------------
 vtkPPIRayScalarField::vtkPPIRayScalarField() = default;
@@ -26,28 +27,20 @@ vtkPPIRayScalarField::Status vtkPPIRayScalarField::Update(
       selection.ArrayAccessMode, selection.ArrayId, selection.ArrayName, cellFlag));
   if (!scalars)
   {
-    if (!this->Reported)
-    {
-      vtkErrorWithObjectMacro(reporter,
-        "No scalars to render: the input has no "
-          << (selection.ArrayName && *selection.ArrayName ? selection.ArrayName : "active")
-          << " point or cell scalar array.");
-    }
-    this->Array = nullptr;
-    this->Reported = true;
-    return Status::Failed;
+    return this->Fail(
+      reporter, std::string("No scalars to render: the input has no ") +
+                  (selection.ArrayName && *selection.ArrayName ? selection.ArrayName : "active") +
+                  " point or cell scalar array.");
   }
-  this->Reported = false;
   // Read per cell (cellFlag 1), else per point.
   const vtkIdType needed = cellFlag == 1 ? input->GetNumberOfCells() : input->GetNumberOfPoints();
+  const std::string name = scalars->GetName() ? scalars->GetName() : "";
   if (scalars->GetNumberOfTuples() < needed)
   {
-    vtkErrorWithObjectMacro(reporter,
-      "Scalar array " << (scalars->GetName() ? scalars->GetName() : "") << " has "
-                      << scalars->GetNumberOfTuples() << " values for " << needed
-                      << (cellFlag == 1 ? " cells" : " points") << "; nothing is rendered.");
-    this->Array = nullptr;
-    return Status::Failed;
+    return this->Fail(reporter, "Scalar array " + name + " has " +
+                                  std::to_string(scalars->GetNumberOfTuples()) + " values for " +
+                                  std::to_string(needed) + (cellFlag == 1 ? " cells" : " points") +
+                                  "; nothing is rendered.");
   }
   const int components = scalars->GetNumberOfComponents();
   const int component = components > 1 && selection.Magnitude
@@ -56,6 +49,7 @@ vtkPPIRayScalarField::Status vtkPPIRayScalarField::Update(
   if (this->Array == scalars && this->CellFlag == cellFlag && this->Component == component &&
       scalars->GetMTime() <= this->Time.GetMTime())
   {
+    this->Reported.clear();
     return Status::Unchanged;
   }
   if (components > 1 && component >= 0 && component != selection.Component)
@@ -73,11 +67,8 @@ vtkPPIRayScalarField::Status vtkPPIRayScalarField::Update(
   scalars->GetRange(range, component); // NaN left out; component -1: magnitude
   if (std::isinf(range[0]) || std::isinf(range[1]))
   {
-    vtkErrorWithObjectMacro(reporter, "Scalar array "
-                                        << (scalars->GetName() ? scalars->GetName() : "")
-                                        << " has infinite values; nothing is rendered.");
-    this->Array = nullptr;
-    return Status::Failed;
+    return this->Fail(
+      reporter, "Scalar array " + name + " has infinite values; nothing is rendered.");
   }
   if (!(range[0] <= range[1]))
   {
@@ -113,7 +104,21 @@ vtkPPIRayScalarField::Status vtkPPIRayScalarField::Update(
     }
     this->Values = this->Derived;
   }
+  this->Reported.clear();
   return Status::Changed;
+}
+
+//------------------------------------------------------------------------------
+vtkPPIRayScalarField::Status vtkPPIRayScalarField::Fail(
+  vtkObject* reporter, const std::string& message)
+{
+  if (message != this->Reported)
+  {
+    vtkErrorWithObjectMacro(reporter, << message.c_str());
+  }
+  this->Reported = message;
+  this->Array = nullptr;
+  return Status::Failed;
 }
 
 //------------------------------------------------------------------------------

@@ -16,6 +16,8 @@
 #include "vtkNew.h"       // for vtkNew
 #include "vtkTimeStamp.h" // for vtkTimeStamp
 
+#include <string> // for std::string
+
 class vtkDataArray;
 class vtkDataSet;
 class vtkDoubleArray;
@@ -76,7 +78,10 @@ private:
   vtkNew<vtkDoubleArray> Derived;
   double Range[2] = { 0, 1 };
   double Shift = 0.0;
-  bool Reported = false; // a missing array was reported
+  // Fails with `message` as an error, reported once until the field is valid
+  // again or the message changes (the mapper updates the field every frame).
+  Status Fail(vtkObject* reporter, const std::string& message);
+  std::string Reported; // the failure last reported
 };
 
 #endif

@@ -39,7 +39,9 @@ public:
 
   /**
    * The layout of the next BuildGeometry() (vtkTetrahedralCellTextures::
-   * Layouts); the one built is GetTextures()->GetLayout().
+   * Layouts); after a successful build, GetTextures()->GetLayout() is the
+   * one built (a failed build leaves the textures' counts and arrays
+   * undefined, and nothing is drawn).
    */
   void SetLayout(int layout) { this->Cells->SetLayout(layout); }
 

@@ -63,7 +63,7 @@ def last_frame_rgb(view):
     return rgba.reshape(height, width, -1)[:, :, :3]
 
 
-def lit_pixels(rgb, background=(0.32, 0.34, 0.43)):
+def lit_pixels(rgb, background=pt.BACKGROUND):
     """Pixels more than 2/255 from the background in some channel."""
     return numpy.abs(rgb.astype(float) - 255.0 * numpy.array(background)).max(axis=2) > 2.0
 
@@ -136,7 +136,13 @@ def main(plugin, baselines, temporary):
     # d <- clamp(d sqrt(t / T), 1, 10) from the last frame's time t; above it
     # ParaView shows its LOD geometry. A still render (T of minutes) brings d
     # back to 1.
+    # The view at 600 x 600 for this step, so that on the CI machine a still
+    # frame takes longer than the 1/15 s ParaView allocates while interacting
+    # (at 300 x 300 it is close to it) and the interactive frame is coarser.
     view.LODThreshold = 1.0e6
+    view.ViewSize = [600, 600]
+    Render(view)
+    still = last_frame_rgb(view).astype(float)
     volume = display.GetClientSideObject().GetActiveRepresentation().GetActor()
     d, t = mapper.GetImageSampleDistance(), mapper.GetTimeToDraw()
     view.SMProxy.InteractiveRender()
@@ -149,21 +155,21 @@ def main(plugin, baselines, temporary):
     if d != 1.0 or not rate >= 1.0 or not allocated < 1.0:
         failures.append("an interactive render did not lower the allocated time: distance %g "
                         "before, rate %g, allocated %g s" % (d, rate, allocated))
-    # The interactive frame against step 2's still image of the same view: the
-    # same silhouette (1 %), colours within what sampling the rays d times
-    # coarser and scaling up bilinearly changes, which grows with d (this
-    # scene at d = 2, 3, 4, 6 set by hand: p99 1, 2, 3, 6 and max 4, 7, 10,
-    # 13 /255): p99 <= max(2, d), max <= 4 d + 1.
+    # The interactive frame against the still one just before it: the same
+    # silhouette (1 %), colours within what sampling the rays d times coarser
+    # and scaling up bilinearly changes, which grows with d (this scene at
+    # 300 x 300, d = 2, 3, 4, 6, 10 set by hand, over the lit pixels: p99 2,
+    # 3, 4, 7, 14 and max 4, 7, 10, 13, 26 /255): p99 <= max(2, 1.5 d),
+    # max <= 4 d + 1.
     distance = mapper.GetImageSampleDistance()
     interactive = last_frame_rgb(view).astype(float)
-    still = pt.read_rgb(os.path.join(temporary, "TestPPIRayRepresentationChanged.png"))
-    still = still.astype(float)
     lit, lit_still = int(lit_pixels(interactive).sum()), int(lit_pixels(still).sum())
-    difference = abs(interactive - still).max(axis=2)
+    # Over the pixels lit in either image (the background would dilute p99).
+    difference = abs(interactive - still).max(axis=2)[lit_pixels(interactive) | lit_pixels(still)]
     p99, largest = numpy.percentile(difference, 99), difference.max()
     print("interactive frame against the still one: %d and %d lit pixels, p99 %.1f, max %.1f /255"
           % (lit, lit_still, p99, largest), flush=True)
-    if (abs(lit - lit_still) > 0.01 * lit_still or p99 > max(2.0, distance)
+    if (abs(lit - lit_still) > 0.01 * lit_still or p99 > max(2.0, 1.5 * distance)
             or largest > 4.0 * distance + 1.0):
         failures.append("interactive frame (distance %.2f) differs from the still one: %d and %d "
                         "lit pixels, p99 %.1f, max %.1f /255"
@@ -172,6 +178,7 @@ def main(plugin, baselines, temporary):
     if abs(mapper.GetImageSampleDistance() - expected) > 1.0e-6 * expected:
         failures.append("interactive image sample distance %g, expected %g"
                         % (mapper.GetImageSampleDistance(), expected))
+    view.ViewSize = [300, 300]
     view.LODThreshold = 0.0
     view.SMProxy.InteractiveRender()
     check_image(view, "TestPPIRayRepresentationChanged")

@@ -22,6 +22,7 @@ REPRESENTATION = "PPIRay Volume"
 SKIP = 125  # ctest SKIP_RETURN_CODE
 RGB_POINTS = [40.0, 0.1, 0.1, 0.8, 150.0, 0.9, 0.9, 0.2, 260.0, 0.9, 0.1, 0.1]
 OPACITY_POINTS = [40.0, 0.0, 0.5, 0.0, 260.0, 0.5, 0.5, 0.0]
+BACKGROUND = (0.32, 0.34, 0.43)  # render_view()'s
 
 
 def load_plugin(path):
@@ -52,7 +53,7 @@ def render_view(size=(300, 300)):
     view = CreateView("RenderView")
     view.ViewSize = list(size)
     view.OrientationAxesVisibility = 0
-    view.Background = [0.32, 0.34, 0.43]
+    view.Background = list(BACKGROUND)
     try:  # ParaView >= 5.10 has palettes; keep the background we set.
         view.UseColorPaletteForBackground = 0
     except AttributeError:
@@ -136,7 +137,7 @@ def read_rgb(path):
     return ppiray_baseline.read_rgb(path)
 
 
-def against_reference(view, display, image_path, array, background=(0.32, 0.34, 0.43),
+def against_reference(view, display, image_path, array, background=BACKGROUND,
                       blend=0):
     """The screenshot at `image_path` against the CPU reference renderer given
     ParaView's own lookup table and opacity function objects (evaluated by

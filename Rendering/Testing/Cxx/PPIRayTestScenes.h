@@ -28,8 +28,10 @@
 
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <iostream>
 #include <map>
 #include <string>
 
@@ -50,10 +52,19 @@ inline void ReadTetrahedronLayout(int argc, char* argv[])
 {
   for (int i = 1; i + 1 < argc; ++i)
   {
-    if (std::strcmp(argv[i], "--tetrahedron-layout") == 0 &&
-        std::strcmp(argv[i + 1], "compact") == 0)
+    if (std::strcmp(argv[i], "--tetrahedron-layout") != 0)
+    {
+      continue;
+    }
+    if (std::strcmp(argv[i + 1], "compact") == 0)
     {
       TetrahedronLayout() = vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_COMPACT;
+    }
+    else if (std::strcmp(argv[i + 1], "planes") != 0)
+    {
+      // A misspelt layout would silently test the default one.
+      std::cout << "FAILED: unknown --tetrahedron-layout " << argv[i + 1] << "\n";
+      std::exit(EXIT_FAILURE);
     }
   }
 }

@@ -218,7 +218,6 @@ int Run(const SceneCase& scene)
   ppiray_test::Scene window(Size, Size);
   scene.TransferFunction(window.Property);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
-  ppiray_test::UseTetrahedronLayout(mapper);
   mapper->SetScalarModeToUsePointFieldData();
   if (scene.CellScalars)
   {
