@@ -303,9 +303,18 @@ void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, Tetrahe
   {
     diagonals.Build(grid);
   }
+  PolyhedronSplitter polyhedra(grid, diagonals, split.Added);
   ForEachCell(grid,
     [&](vtkIdType cellId, int type, vtkIdType npts, const vtkIdType* pts)
     {
+      if (type == VTK_POLYHEDRON && !tetrahedraOnly)
+      {
+        const vtkIdType made = polyhedra.Split(cellId, split.Tets);
+        split.CellIds.insert(split.CellIds.end(), made, cellId);
+        split.NumberOfSplitCells += made > 0 ? 1 : 0;
+        split.NumberOfPolyhedra += made > 0 ? 1 : 0;
+        return;
+      }
       const LinearShape shape = LinearShapeOf(type);
       const bool accepted = shape.Type != 0 && npts >= shape.Corners &&
                             (!tetrahedraOnly || (type == VTK_TETRA && npts == 4));

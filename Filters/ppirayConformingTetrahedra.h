@@ -28,6 +28,7 @@
 #define ppirayConformingTetrahedra_h
 
 #include "ppirayFiltersModule.h"  // for export macro
+#include "ppirayPolyhedra.h"      // for ppiray::AddedPoints
 #include "vtkCellArray.h"         // for ForEachCell
 #include "vtkCellArrayIterator.h" // for ForEachCell
 #include "vtkCellType.h"          // for VTK_VOXEL
@@ -89,9 +90,11 @@ inline int HexahedronCorner(int cellType, int i)
 /** What SplitIntoTetrahedra found, per kind of input cell. */
 struct TetrahedralSplit
 {
-  std::vector<vtkIdType> Tets;          // 4 point ids per tetrahedron
-  std::vector<vtkIdType> CellIds;       // input cell of each tetrahedron
-  vtkIdType NumberOfSplitCells = 0;     // hexahedra, voxels, wedges, pyramids
+  std::vector<vtkIdType> Tets;      // 4 point ids per tetrahedron
+  std::vector<vtkIdType> CellIds;   // input cell of each tetrahedron
+  AddedPoints Added;                // points the polyhedra's split adds (ids after the grid's)
+  vtkIdType NumberOfSplitCells = 0; // hexahedra, voxels, wedges, pyramids, polyhedra
+  vtkIdType NumberOfPolyhedra = 0;
   vtkIdType NumberOfQuadraticCells = 0; // rendered through their linear corners
   std::vector<vtkIdType> Unsupported;   // pairs (cell type, count), left out
   vtkIdType GetNumberOfUnsupportedCells() const;
@@ -108,7 +111,8 @@ PPIRAYFILTERS_EXPORT void ExtractTetrahedra(vtkUnstructuredGrid* grid, std::vect
 /**
  * The tetrahedra of `grid`: its tetrahedra as they are and, unless
  * `tetrahedraOnly`, the conforming split of its hexahedra, voxels, wedges and
- * pyramids (linear or not). Other cells are counted in Unsupported.
+ * pyramids (linear or not) and its polyhedra (ppirayPolyhedra.h: with points
+ * added). Other cells are counted in Unsupported.
  */
 PPIRAYFILTERS_EXPORT void SplitIntoTetrahedra(
   vtkUnstructuredGrid* grid, bool tetrahedraOnly, TetrahedralSplit& split);

@@ -1,5 +1,7 @@
 #include "ppirayPlaneSection.h"
 
+#include "ppirayLinearCellKinds.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -62,18 +64,28 @@ int TetrahedronSection(
 }
 
 //------------------------------------------------------------------------------
-int HexahedronSection(
-  const glm::dvec3 p[8], const glm::dvec4& plane, std::vector<glm::dvec3>& triangles)
+int CellSection(
+  int kind, const glm::dvec3 p[8], const glm::dvec4& plane, std::vector<glm::dvec3>& triangles)
 {
-  // Six tetrahedra around the diagonal 0-6, one per face of the hexahedron
-  // not touching corner 0 or 6 split along the path 1-2-3-7-4-5-1.
-  static const int ring[6] = { 1, 2, 3, 7, 4, 5 };
+  // The tetrahedra from corner 0 to the fan triangles of the faces that do
+  // not touch it (a hexahedron: the six around its diagonal 0-6).
+  const LinearCellKindInfo& info = LinearCellKindOf(kind);
   int count = 0;
-  for (int i = 0; i < 6; ++i)
+  for (int f = 0; f < info.Faces; ++f)
   {
-    const glm::dvec3 tet[4] = { p[0], p[ring[i]], p[ring[(i + 1) % 6]], p[6] };
-    count += TetrahedronSection(tet, plane, triangles);
+    const int* q = info.Face[f];
+    const int size = FaceSize(kind, f);
+    if (std::find(q, q + size, 0) != q + size)
+    {
+      continue;
+    }
+    for (int t = 0; t + 2 < size; ++t)
+    {
+      const glm::dvec3 tet[4] = { p[0], p[q[0]], p[q[t + 1]], p[q[t + 2]] };
+      count += TetrahedronSection(tet, plane, triangles);
+    }
   }
   return count;
 }
+
 }

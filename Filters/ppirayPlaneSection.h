@@ -9,9 +9,9 @@
  * change sign: on each such edge (a, b) at p_a + s_a / (s_a - s_b) (p_b - p_a),
  * three points (one corner apart from the others) or four (two and two). A
  * corner on the plane counts as behind it, so a face in the plane is part of
- * the section of the cell in front of it only. A hexahedron's section is
- * the union of the sections of its six tetrahedra around the diagonal 0-6
- * (exact for planar faces).
+ * the section of the cell in front of it only. Another linear cell's section
+ * is the union of the sections of tetrahedra that fill it (exact for planar
+ * faces).
  */
 #ifndef ppirayPlaneSection_h
 #define ppirayPlaneSection_h
@@ -34,11 +34,13 @@ PPIRAYFILTERS_EXPORT int TetrahedronSection(
   const glm::dvec3 p[4], const glm::dvec4& plane, std::vector<glm::dvec3>& triangles);
 
 /**
- * The section of the hexahedron with corners `p` (VTK_HEXAHEDRON order) as
- * the sections of its six tetrahedra around the diagonal 0-6.
+ * The section of a linear cell of kind `kind` (ppirayLinearCellKinds.h;
+ * corners `p`) as the sections of the tetrahedra from its corner 0 to the
+ * fan triangles of the faces that do not touch it (a hexahedron: the six
+ * tetrahedra around its diagonal 0-6). Exact for planar faces.
  */
-PPIRAYFILTERS_EXPORT int HexahedronSection(
-  const glm::dvec3 p[8], const glm::dvec4& plane, std::vector<glm::dvec3>& triangles);
+PPIRAYFILTERS_EXPORT int CellSection(
+  int kind, const glm::dvec3 p[8], const glm::dvec4& plane, std::vector<glm::dvec3>& triangles);
 }
 
 #endif

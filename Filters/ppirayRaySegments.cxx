@@ -20,8 +20,50 @@ namespace reference
 {
 namespace
 {
+// Where the ray meets a polygon of five or more corners (a polyhedron's
+// face), taken as planar: its plane by Newell's normal through the corners'
+// centre, the crossing inside by the even-odd rule in the plane.
+void PolygonCrossing(
+  const std::vector<Vec3>& p, const Vec3& o, const Vec3& d, std::vector<double>& ts)
+{
+  const size_t m = p.size();
+  Vec3 normal(0.0), centre(0.0);
+  for (size_t k = 0; k < m; ++k)
+  {
+    normal += glm::cross(p[k], p[(k + 1) % m]);
+    centre += p[k] / static_cast<double>(m);
+  }
+  const double along = glm::dot(normal, d);
+  if (!(std::abs(along) > 1e-300))
+  {
+    return;
+  }
+  const double t = glm::dot(normal, centre - o) / along;
+  const Vec3 x = o + t * d;
+  // Drop the normal's largest axis; count the edges crossing a ray from x.
+  const int drop = std::abs(normal.x) > std::abs(normal.y)
+                     ? (std::abs(normal.x) > std::abs(normal.z) ? 0 : 2)
+                     : (std::abs(normal.y) > std::abs(normal.z) ? 1 : 2);
+  const int u = (drop + 1) % 3, v = (drop + 2) % 3;
+  bool inside = false;
+  for (size_t k = 0, l = m - 1; k < m; l = k++)
+  {
+    const Vec3 a = p[k], b = p[l];
+    if ((a[v] > x[v]) != (b[v] > x[v]) &&
+        x[u] < a[u] + (b[u] - a[u]) * (x[v] - a[v]) / (b[v] - a[v]))
+    {
+      inside = !inside;
+    }
+  }
+  if (inside)
+  {
+    ts.push_back(t);
+  }
+}
+
 // Ray parameters t where origin + t direction crosses a cell face: a triangle
-// (Moller-Trumbore), or a quadrilateral as the bilinear patch
+// (Moller-Trumbore), a polygon of five or more corners (PolygonCrossing), or a
+// quadrilateral as the bilinear patch
 // P(u, v) = (1-u)(1-v) p0 + u (1-v) p1 + u v p2 + (1-u) v p3 that the cell's
 // interpolation spans (planar or not): with n1, n2 orthogonal to the ray,
 // A(u, v) = (P - o) . n1 = 0 and B(u, v) = (P - o) . n2 = 0 are bilinear;
@@ -47,6 +89,11 @@ void FaceCrossings(
     {
       ts.push_back(glm::dot(e2, q) / a);
     }
+    return;
+  }
+  if (p.size() > 4)
+  {
+    PolygonCrossing(p, o, d, ts);
     return;
   }
   // Two unit vectors orthogonal to d.
@@ -208,22 +255,41 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
     FaceCrossings(corners, origin, direction, ts);
   }
   std::sort(ts.begin(), ts.end());
-  auto evaluate = [&](double t, double& s)
+  // A polyhedron's EvaluatePosition casts random rays (IsInside) from
+  // vtkMath's one generator, which is not thread-safe: it decides only
+  // whether an interval's midpoint is inside (serialized), and the field
+  // along the interval comes from InterpolateFunctions (mean value
+  // coordinates at x), which casts none.
+  const bool polyhedron = cell->GetCellType() == VTK_POLYHEDRON;
+  auto evaluate = [&](double t, double& s, bool insideTest)
   {
     double x[3], pcoords[3], dist2;
-    int subId;
+    int subId, found = 1;
     for (int i = 0; i < 3; ++i)
     {
       x[i] = origin[i] + t * direction[i] + centre[i];
     }
-    const int found = cell->EvaluatePosition(x, nullptr, subId, pcoords, dist2, weights.data());
+    if (polyhedron && insideTest)
+    {
+#pragma omp critical(ppirayPolyhedronEvaluate)
+      found = cell->EvaluatePosition(x, nullptr, subId, pcoords, dist2, weights.data());
+    }
+    else if (polyhedron)
+    {
+      cell->InterpolateFunctions(x, weights.data()); // a polyhedron's takes x itself
+    }
+    else
+    {
+      found = cell->EvaluatePosition(x, nullptr, subId, pcoords, dist2, weights.data());
+    }
     s = 0.0;
     for (int v = 0; v < n; ++v)
     {
       s += weights[v] * values[v];
     }
-    // EvaluatePosition itself accepts 1e-3 outside the parametric domain.
-    return found != -1 && cell->GetParametricDistance(pcoords) <= 1e-9;
+    // EvaluatePosition itself accepts 1e-3 outside the parametric domain; a
+    // polyhedron's says whether x is inside.
+    return polyhedron ? found == 1 : found != -1 && cell->GetParametricDistance(pcoords) <= 1e-9;
   };
   // [a, b] with its midpoint m known: the quarter points decide, and become
   // the midpoints of the halves. At most MaximumSplitDepth levels and
@@ -234,8 +300,8 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
   {
     double sq1, sq3;
     const double m = 0.5 * (a + b);
-    evaluate(0.5 * (a + m), sq1);
-    evaluate(0.5 * (m + b), sq3);
+    evaluate(0.5 * (a + m), sq1, false);
+    evaluate(0.5 * (m + b), sq3, false);
     const double deviation = std::max({ std::abs(sm - 0.5 * (sa + sb)),
       std::abs(sq1 - 0.75 * sa - 0.25 * sb), std::abs(sq3 - 0.25 * sa - 0.75 * sb) });
     if (depth >= MaximumSplitDepth || pieces + 2 >= MaximumPiecesPerCell ||
@@ -254,11 +320,11 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
   {
     const double a = std::max(ts[k], 0.0), b = ts[k + 1];
     double sm;
-    if (b > a && evaluate(0.5 * (a + b), sm))
+    if (b > a && evaluate(0.5 * (a + b), sm, true))
     {
       double sa, sb;
-      evaluate(a, sa);
-      evaluate(b, sb);
+      evaluate(a, sa, false);
+      evaluate(b, sb, false);
       linearize(linearize, a, sa, sm, b, sb, 0);
     }
   }

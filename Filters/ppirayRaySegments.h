@@ -64,8 +64,9 @@ bool ClipRay(const Tetrahedron& tet, const Vec3& origin, const Vec3& direction, 
 // VTK_HEXAHEDRON); the type's own functions use the first ones.
 int InterpolatedPoints(vtkCell* cell);
 
-// The pieces of the ray inside a hexahedron, voxel, wedge or pyramid, with the
-// cell's own (isoparametric) interpolation: the ray's crossings with every
+// The pieces of the ray inside a hexahedron, voxel, wedge, pyramid or
+// polyhedron, with the cell's own interpolation (isoparametric; a
+// polyhedron's mean value coordinates): the ray's crossings with every
 // face (FaceCrossings) cut it into intervals, an interval whose midpoint is
 // inside the cell (parametric distance 0) is inside; each inside interval is
 // split until the interpolated scalar is linear along the ray within

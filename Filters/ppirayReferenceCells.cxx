@@ -75,8 +75,8 @@ ReferenceCells CollectCells(vtkUnstructuredGrid* grid)
       }
     }
   }
-  // Hexahedra, voxels, wedges and pyramids take the general path; their
-  // points in CSR form.
+  // Hexahedra, voxels, wedges, pyramids and polyhedra take the general path;
+  // their points in CSR form.
   if (!unsupported.empty())
   {
     for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
@@ -87,7 +87,8 @@ ReferenceCells CollectCells(vtkUnstructuredGrid* grid)
       {
         continue;
       }
-      if (type != VTK_HEXAHEDRON && type != VTK_VOXEL && type != VTK_WEDGE && type != VTK_PYRAMID)
+      if (type != VTK_HEXAHEDRON && type != VTK_VOXEL && type != VTK_WEDGE && type != VTK_PYRAMID &&
+          type != VTK_POLYHEDRON)
       {
         cells.Skipped += type != VTK_EMPTY_CELL ? 1 : 0; // an empty cell holds nothing
         continue;

@@ -3,6 +3,7 @@
 #include "ppirayConformingTetrahedra.h"
 #include "ppirayHiddenCells.h"
 #include "ppirayInvertedSheets.h"
+#include "ppirayLinearCellKinds.h"
 #include "ppirayMeshLocalFrame.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -40,7 +41,7 @@ double CornerFrameVolume(const double* local, const vtkIdType c[8], int i, doubl
 
 // |det[a b c]| / (|a| |b| |c|) at corner i: 1 for a right-angled corner, 0 for
 // a collapsed or flat one. The shader renders a cell when this exceeds 1e-6
-// at corner 0 (march_hexahedra_fs.glsl).
+// at corner 0 (cell_hexahedron_fs.glsl).
 double FrameQuality(const double* local, const vtkIdType c[8], int i)
 {
   double scale;
@@ -48,47 +49,70 @@ double FrameQuality(const double* local, const vtkIdType c[8], int i)
   return scale > 0 ? std::abs(volume) / scale : 0.0;
 }
 
-// Negative for a left-handed (mirrored) cell: the frame volumes at its eight
-// corners, summed. All eight, not two opposite ones: a collapsed corner has no
-// frame, and a pyramid written as a hexahedron (4, 5, 6 on 0, 1, 2) has none
-// at 0 or 6.
-// Whether hexahedra a / 6 and b / 6 lie on one side of their shared face
-// (face a % 6 of the first): their centroids on the same side of the plane
-// through the face's centre with the normal (q2 - q0) x (q3 - q1) (the mesh
-// folds back on itself there).
-bool OnOneSide(const double* local, const vtkIdType* cornerIds, vtkIdType a, vtkIdType b)
+// The centre of a cell's corners.
+void CellCentre(const double* local, const vtkIdType* c, int kind, double centre[3])
+{
+  const int n = ppiray::LinearCellKindOf(kind).Corners;
+  centre[0] = centre[1] = centre[2] = 0;
+  for (int v = 0; v < n; ++v)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      centre[k] += local[3 * c[v] + k] / n;
+    }
+  }
+}
+
+// Whether cells a / 6 and b / 6 lie on one side of their shared face (face
+// a % 6 of the first): their centres on the same side of the plane through
+// the face's centre with its normal, (q2 - q0) x (q3 - q1) for a quadrilateral,
+// (q1 - q0) x (q2 - q0) for a triangle (the mesh folds back on itself there).
+bool OnOneSide(const double* local, const vtkIdType* cornerIds, const unsigned char* kinds,
+  vtkIdType a, vtkIdType b)
 {
   const vtkIdType* ca = cornerIds + 8 * (a / 6);
   const vtkIdType* cb = cornerIds + 8 * (b / 6);
-  const vtkIdType* q = vtkHexahedron::GetFaceArray(static_cast<int>(a % 6));
-  double centre[3] = { 0, 0, 0 }, inA[3] = { 0, 0, 0 }, inB[3] = { 0, 0, 0 };
+  const int kind = kinds[a / 6];
+  const int f = static_cast<int>(a % 6);
+  const int* q = ppiray::LinearCellKindOf(kind).Face[f];
+  const int size = ppiray::FaceSize(kind, f);
+  double centre[3] = { 0, 0, 0 }, inA[3], inB[3];
+  CellCentre(local, ca, kind, inA);
+  CellCentre(local, cb, kinds[b / 6], inB);
   for (int k = 0; k < 3; ++k)
   {
-    for (int v = 0; v < 4; ++v)
+    for (int v = 0; v < size; ++v)
     {
-      centre[k] += 0.25 * local[3 * ca[q[v]] + k];
-    }
-    for (int v = 0; v < 8; ++v)
-    {
-      inA[k] += 0.125 * local[3 * ca[v] + k];
-      inB[k] += 0.125 * local[3 * cb[v] + k];
+      centre[k] += local[3 * ca[q[v]] + k] / size;
     }
   }
-  double d02[3], d13[3], n[3];
-  for (int k = 0; k < 3; ++k)
+  auto at = [&](int v) { return local + 3 * ca[q[v]]; };
+  double e0[3], e1[3], n[3];
+  vtkMath::Subtract(at(2), at(0), e0);
+  vtkMath::Subtract(size == 4 ? at(3) : at(1), size == 4 ? at(1) : at(0), e1);
+  if (size == 3)
   {
-    d02[k] = local[3 * ca[q[2]] + k] - local[3 * ca[q[0]] + k];
-    d13[k] = local[3 * ca[q[3]] + k] - local[3 * ca[q[1]] + k];
-    inA[k] -= centre[k];
-    inB[k] -= centre[k];
+    std::swap(e0, e1); // (q1 - q0) x (q2 - q0)
   }
-  vtkMath::Cross(d02, d13, n);
+  vtkMath::Cross(e0, e1, n);
+  vtkMath::Subtract(inA, centre, inA);
+  vtkMath::Subtract(inB, centre, inB);
   const double sideA = vtkMath::Dot(n, inA), sideB = vtkMath::Dot(n, inB);
   return (sideA > 0 && sideB > 0) || (sideA < 0 && sideB < 0);
 }
 
-double Handedness(const double* local, const vtkIdType c[8])
+double SignedVolume(const double* local, const vtkIdType c[8], int kind);
+
+// Negative for a left-handed (mirrored) hexahedron: the frame volumes at its
+// eight corners, summed. All eight, not two opposite ones: a collapsed corner
+// has no frame, and a pyramid written as a hexahedron (4, 5, 6 on 0, 1, 2)
+// has none at 0 or 6. Other kinds: their signed volume.
+double Handedness(const double* local, const vtkIdType c[8], int kind)
 {
+  if (kind != ppiray::HEXAHEDRON_KIND)
+  {
+    return SignedVolume(local, c, kind);
+  }
   double sum = 0, scale;
   for (int i = 0; i < 8; ++i)
   {
@@ -100,34 +124,36 @@ double Handedness(const double* local, const vtkIdType c[8])
 // Corner positions on the unit cube, bits (x, y, z), in VTK_HEXAHEDRON order.
 const int CornerBits[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
 
-// Volume of the hexahedron as the six tetrahedra (0, a, b, 6) around its 0-6
-// diagonal (a, b consecutive on the ring of the other corners).
-double SignedVolume(const double* local, const vtkIdType c[8])
+// Signed volume of a cell by the divergence theorem over its outward faces,
+// each fanned from its first corner: sum of det[a - p0, b - p0, c - p0] / 6
+// over the fan triangles (a, b, c), p0 the cell's corner 0.
+double SignedVolume(const double* local, const vtkIdType c[8], int kind)
 {
-  static const int ring[7] = { 1, 2, 3, 7, 4, 5, 1 };
+  const ppiray::LinearCellKindInfo& info = ppiray::LinearCellKindOf(kind);
   auto at = [&](int i) { return local + 3 * c[i]; };
   double volume = 0;
-  for (int k = 0; k < 6; ++k)
+  for (int f = 0; f < info.Faces; ++f)
   {
-    double a[3], b[3], d[3];
-    for (int i = 0; i < 3; ++i)
+    const int* q = info.Face[f];
+    for (int t = 0; t + 2 < ppiray::FaceSize(kind, f); ++t)
     {
-      a[i] = at(ring[k])[i] - at(0)[i];
-      b[i] = at(ring[k + 1])[i] - at(0)[i];
-      d[i] = at(6)[i] - at(0)[i];
+      double a[3], b[3], d[3], n[3];
+      vtkMath::Subtract(at(q[0]), at(0), a);
+      vtkMath::Subtract(at(q[t + 1]), at(0), b);
+      vtkMath::Subtract(at(q[t + 2]), at(0), d);
+      vtkMath::Cross(b, d, n);
+      volume += vtkMath::Dot(a, n) / 6.0;
     }
-    double n[3];
-    vtkMath::Cross(a, b, n);
-    volume += vtkMath::Dot(n, d) / 6.0;
   }
   return volume;
 }
 
-// Whether the hexahedron has no volume: less than 1e-9 of its largest edge cubed.
-bool IsFlat(const double* local, const vtkIdType c[8])
+// Whether the cell has no volume: less than 1e-9 of its largest edge cubed.
+bool IsFlat(const double* local, const vtkIdType c[8], int kind)
 {
+  const int n = ppiray::LinearCellKindOf(kind).Corners;
   double size = 0;
-  for (int i = 0; i < 8; ++i)
+  for (int i = 0; i < n; ++i)
   {
     for (int j = 0; j < i; ++j)
     {
@@ -135,7 +161,7 @@ bool IsFlat(const double* local, const vtkIdType c[8])
     }
   }
   size = std::sqrt(size);
-  return !(std::abs(SignedVolume(local, c)) > 1e-9 * size * size * size);
+  return !(std::abs(SignedVolume(local, c, kind)) > 1e-9 * size * size * size);
 }
 
 // Renumbers the corners by the rotation of the cube that takes corner `i` to
@@ -165,6 +191,49 @@ void MoveFrameToCorner(vtkIdType c[8], int i)
   std::copy(moved, moved + 8, c);
 }
 
+// The field of a cell of `kind` from its corner values s (cell_hexahedron_fs.glsl
+// reads it): a hexahedron's trilinear fit in its frame
+// (vtkHexahedronCoefficients); a wedge's and a tetrahedron's VTK
+// interpolation in the frame (u, v, w) of edges 0-1, 0-2, 0-3, where VTK's
+// parametric coordinates are the frame coordinates when the cell is affine:
+//   wedge  f = s0 + (s1 - s0) u + (s2 - s0) v + (s3 - s0) w
+//              + (s0 - s2 - s3 + s5) v w + (s0 - s1 - s3 + s4) u w,
+//   tetrahedron the same without the products (barycentric);
+// a pyramid's corner values themselves.
+void CellCoefficients(
+  int kind, const double* local, const vtkIdType* ids, const double s[8], float out[8])
+{
+  double c[8] = { s[0], 0, 0, 0, 0, 0, 0, 0 };
+  if (kind == ppiray::HEXAHEDRON_KIND)
+  {
+    double corners[8][3], frame[12];
+    for (int i = 0; i < 8; ++i)
+    {
+      std::copy_n(local + 3 * ids[i], 3, corners[i]);
+    }
+    vtkHexahedronCoefficients::FitCoefficients(corners, s, frame, c);
+  }
+  else if (kind == ppiray::PYRAMID_KIND)
+  {
+    std::copy_n(s, 5, c);
+  }
+  else
+  {
+    c[1] = s[1] - s[0];
+    c[2] = s[2] - s[0];
+    c[3] = s[3] - s[0];
+    if (kind == ppiray::WEDGE_KIND)
+    {
+      c[5] = s[0] - s[2] - s[3] + s[5];
+      c[6] = s[0] - s[1] - s[3] + s[4];
+    }
+  }
+  for (int k = 0; k < 8; ++k)
+  {
+    out[k] = static_cast<float>(c[k]);
+  }
+}
+
 struct FaceKey
 {
   std::array<vtkIdType, 4> Ids; // sorted
@@ -174,16 +243,46 @@ struct FaceKey
 }
 
 //------------------------------------------------------------------------------
-int vtkHexahedralCellTextures::TriangleCorner(int f, int t, int v, bool secondDiagonal)
+int vtkHexahedralCellTextures::TriangleCorner(int kind, int f, int t, int v, bool secondDiagonal)
 {
-  return static_cast<int>(
-    vtkHexahedron::GetFaceArray(f)[ppiray::QuadTriangleCorner(t, v, secondDiagonal)]);
+  const int* q = ppiray::LinearCellKindOf(kind).Face[f];
+  return ppiray::FaceSize(kind, f) == 3 ? q[v]
+                                        : q[ppiray::QuadTriangleCorner(t, v, secondDiagonal)];
 }
 
 //------------------------------------------------------------------------------
 bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
 {
+  this->Clear();
+  if (!grid || !grid->GetPoints() || !grid->GetCells() || !this->CollectCells(grid))
+  {
+    return false; // only counted: a grid of tetrahedra only, or with other cells
+  }
+  this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
+  this->DropFlatCells();
+  if (this->GetNumberOfHexahedra() == 0)
+  {
+    return false;
+  }
+  this->Hidden = ppiray::HiddenCells(grid, this->CellIds);
+  this->OrientCells();
+  this->StoreCorners();
+  std::vector<vtkIdType> boundary = this->MatchFaces();
+  this->LinkSplitQuadrilaterals(boundary);
+  if (this->NumberOfFoldedFaces > 0)
+  {
+    this->MarkTurnBacks();
+  }
+  this->ExtractBoundary(boundary, grid->GetNumberOfPoints());
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::Clear()
+{
   this->CellIds.clear();
+  this->Kinds.clear();
   this->CornerIds.clear();
   this->Corners.clear();
   this->Neighbors.clear();
@@ -191,79 +290,108 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->BoundaryPoints.clear();
   this->BoundaryTriangles.clear();
   this->BoundaryFaces.clear();
+  std::fill(std::begin(this->NumberOfCellsOfKind), std::end(this->NumberOfCellsOfKind), 0);
   this->NumberOfMirroredHexahedra = 0;
   this->NumberOfNonManifoldFaces = 0;
   this->NumberOfUnfoldedFaces = 0;
   this->NumberOfFoldedFaces = 0;
+  this->NumberOfSplitQuadrilaterals = 0;
   this->NumberOfSingularFrames = 0;
   this->NumberOfFlatHexahedra = 0;
   this->NumberOfOtherCells = 0;
   this->NumberOfQuadraticCells = 0;
-  if (!grid || !grid->GetPoints() || !grid->GetCells())
-  {
-    return false;
-  }
-  // Hexahedra, in VTK_HEXAHEDRON order.
+}
+
+//------------------------------------------------------------------------------
+bool vtkHexahedralCellTextures::CollectCells(vtkUnstructuredGrid* grid)
+{
   ppiray::ForEachCell(grid,
     [&](vtkIdType cellId, int type, vtkIdType npts, const vtkIdType* pts)
     {
       const ppiray::LinearShape shape = ppiray::LinearShapeOf(type);
-      if (shape.Type != VTK_HEXAHEDRON || npts < 8)
+      const int kind = ppiray::LinearCellKindOfType(shape.Type);
+      if (kind < 0 || npts < shape.Corners)
       {
         ++this->NumberOfOtherCells;
         return;
       }
       this->NumberOfQuadraticCells += shape.HigherOrder ? 1 : 0;
+      ++this->NumberOfCellsOfKind[kind];
       this->CellIds.push_back(cellId);
+      this->Kinds.push_back(static_cast<unsigned char>(kind));
       for (int i = 0; i < 8; ++i)
       {
-        this->CornerIds.push_back(pts[ppiray::HexahedronCorner(type, i)]);
+        const int corner = i < shape.Corners ? i : 0; // unused slots repeat corner 0
+        this->CornerIds.push_back(
+          pts[kind == ppiray::HEXAHEDRON_KIND ? ppiray::HexahedronCorner(type, corner) : corner]);
       }
     });
-  if (this->CellIds.empty() || this->NumberOfOtherCells > 0)
+  const vtkIdType all = static_cast<vtkIdType>(this->CellIds.size());
+  if (this->NumberOfCellsOfKind[ppiray::TETRAHEDRON_KIND] == all)
   {
-    return false; // only counted: the textures describe meshes of hexahedra only
-  }
-  this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
-  const double* local = this->LocalPoints.data();
-
-  // Zero-volume hexahedra (a layer pinched out to nothing: top face on the
-  // bottom face) are left out, like zero-volume tetrahedra: they hold no
-  // volume, and the cells on either side share their points, so they meet
-  // face to face without them. Volume: the six tetrahedra around the 0-6
-  // diagonal, against the cell's size cubed.
-  {
-    const vtkIdType count = static_cast<vtkIdType>(this->CellIds.size());
-    vtkIdType kept = 0;
-    for (vtkIdType h = 0; h < count; ++h)
-    {
-      const vtkIdType* c = this->CornerIds.data() + 8 * h;
-      if (IsFlat(local, c))
-      {
-        ++this->NumberOfFlatHexahedra;
-        continue;
-      }
-      std::copy(c, c + 8, this->CornerIds.data() + 8 * kept);
-      this->CellIds[kept++] = this->CellIds[h];
-    }
-    this->CellIds.resize(kept);
-    this->CornerIds.resize(8 * kept);
-  }
-  const vtkIdType numberOfHexahedra = this->GetNumberOfHexahedra();
-  if (numberOfHexahedra == 0)
-  {
+    // Tetrahedra only (or nothing): the tetrahedral textures' mesh.
+    this->CellIds.clear();
+    this->Kinds.clear();
+    this->CornerIds.clear();
+    this->NumberOfCellsOfKind[ppiray::TETRAHEDRON_KIND] = 0;
     return false;
   }
-  this->Hidden = ppiray::HiddenCells(grid, this->CellIds);
+  return this->NumberOfOtherCells == 0;
+}
 
-  // Right-handed, with the cell frame at a corner that has one.
-  for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
+//------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::DropFlatCells()
+{
+  // Zero-volume cells (a layer pinched out to nothing: top face on the bottom
+  // face) are left out, like zero-volume tetrahedra: they hold no volume, and
+  // the cells on either side share their points, so they meet face to face
+  // without them.
+  const double* local = this->LocalPoints.data();
+  const vtkIdType count = static_cast<vtkIdType>(this->CellIds.size());
+  vtkIdType kept = 0;
+  for (vtkIdType h = 0; h < count; ++h)
+  {
+    const vtkIdType* c = this->CornerIds.data() + 8 * h;
+    if (IsFlat(local, c, this->Kinds[h]))
+    {
+      ++this->NumberOfFlatHexahedra;
+      --this->NumberOfCellsOfKind[this->Kinds[h]];
+      continue;
+    }
+    std::copy(c, c + 8, this->CornerIds.data() + 8 * kept);
+    this->CellIds[kept] = this->CellIds[h];
+    this->Kinds[kept++] = this->Kinds[h];
+  }
+  this->CellIds.resize(kept);
+  this->Kinds.resize(kept);
+  this->CornerIds.resize(8 * kept);
+}
+
+//------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::OrientCells()
+{
+  // Right-handed (mirrored by the kind's permutation), a hexahedron with its
+  // cell frame at a corner that has one.
+  const double* local = this->LocalPoints.data();
+  const vtkIdType count = this->GetNumberOfHexahedra();
+  for (vtkIdType h = 0; h < count; ++h)
   {
     vtkIdType* c = this->CornerIds.data() + 8 * h;
-    if (Handedness(local, c) < 0)
+    const int kind = this->Kinds[h];
+    if (Handedness(local, c, kind) < 0)
     {
-      std::rotate(c, c + 4, c + 8); // swap bottom and top
+      const int* mirror = ppiray::LinearCellKindOf(kind).Mirror;
+      vtkIdType mirrored[8];
+      for (int i = 0; i < 8; ++i)
+      {
+        mirrored[i] = c[mirror[i]];
+      }
+      std::copy(mirrored, mirrored + 8, c);
       ++this->NumberOfMirroredHexahedra;
+    }
+    if (kind != ppiray::HEXAHEDRON_KIND)
+    {
+      continue;
     }
     // The cell frame at the best-shaped corner when corner 0 is collapsed or
     // flat (pinch-outs): a rotation of the corner numbering.
@@ -281,11 +409,16 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     }
     this->NumberOfSingularFrames += quality > 1e-6 ? 0 : 1;
   }
+}
 
-  // Corners in the local frame.
-  this->Corners.resize(24 * numberOfHexahedra);
+//------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::StoreCorners()
+{
+  const double* local = this->LocalPoints.data();
+  const vtkIdType count = this->GetNumberOfHexahedra();
+  this->Corners.resize(24 * count);
   double diameter2 = 0;
-  for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
+  for (vtkIdType h = 0; h < count; ++h)
   {
     const vtkIdType* c = this->CornerIds.data() + 8 * h;
     for (int i = 0; i < 8; ++i)
@@ -302,35 +435,57 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     }
   }
   this->MaximumCellDiameter = std::sqrt(diameter2);
+}
 
-  // Faces matched by their sorted point ids; diagonals by the smallest id,
-  // except where that folds a collapsed cell (ppiray::QuadDiagonals).
+//------------------------------------------------------------------------------
+std::vector<vtkIdType> vtkHexahedralCellTextures::MatchFaces()
+{
+  // Faces matched by their sorted point ids (a triangle's key starts with
+  // -1, so a triangle never matches a quadrilateral); a quadrilateral's
+  // diagonal by the smallest id, except where that folds a collapsed
+  // hexahedron (ppiray::QuadDiagonals).
+  const vtkIdType count = this->GetNumberOfHexahedra();
   ppiray::QuadDiagonals diagonals;
-  for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
+  for (vtkIdType h = 0; h < count; ++h)
   {
-    diagonals.AddHexahedron(this->CornerIds.data() + 8 * h);
+    if (this->Kinds[h] == ppiray::HEXAHEDRON_KIND)
+    {
+      diagonals.AddHexahedron(this->CornerIds.data() + 8 * h);
+    }
   }
   this->NumberOfUnfoldedFaces = diagonals.GetNumberOfUnfoldedFaces();
-  std::vector<FaceKey> faces(6 * numberOfHexahedra);
-  this->Neighbors.assign(8 * numberOfHexahedra, -1);
-  for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
+  std::vector<FaceKey> faces;
+  faces.reserve(6 * count);
+  this->Neighbors.assign(8 * count, -1);
+  for (vtkIdType h = 0; h < count; ++h)
   {
     const vtkIdType* c = this->CornerIds.data() + 8 * h;
+    const int kind = this->Kinds[h];
     int mask = 0;
-    for (int f = 0; f < 6; ++f)
+    for (int f = 0; f < ppiray::LinearCellKindOf(kind).Faces; ++f)
     {
-      const vtkIdType* q = vtkHexahedron::GetFaceArray(f);
-      FaceKey& key = faces[6 * h + f];
-      key.Ids = { c[q[0]], c[q[1]], c[q[2]], c[q[3]] };
-      mask |=
-        diagonals.AlongFirstDiagonal(key.Ids[0], key.Ids[1], key.Ids[2], key.Ids[3]) ? 0 : 1 << f;
+      const int* q = ppiray::LinearCellKindOf(kind).Face[f];
+      FaceKey key;
+      if (ppiray::FaceSize(kind, f) == 4)
+      {
+        key.Ids = { c[q[0]], c[q[1]], c[q[2]], c[q[3]] };
+        mask |=
+          diagonals.AlongFirstDiagonal(key.Ids[0], key.Ids[1], key.Ids[2], key.Ids[3]) ? 0 : 1 << f;
+      }
+      else
+      {
+        key.Ids = { -1, c[q[0]], c[q[1]], c[q[2]] };
+      }
       std::sort(key.Ids.begin(), key.Ids.end());
       key.Owner = 6 * h + f;
+      faces.push_back(key);
     }
     this->Neighbors[8 * h + 6] = mask;
+    this->Neighbors[8 * h + 7] = kind;
   }
   std::sort(faces.begin(), faces.end());
   std::vector<vtkIdType> boundary; // 6 h + f
+  const double* local = this->LocalPoints.data();
   for (size_t i = 0; i < faces.size();)
   {
     size_t j = i + 1;
@@ -341,17 +496,14 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     if (j - i == 2)
     {
       const vtkIdType a = faces[i].Owner, b = faces[i + 1].Owner;
-      const bool folded = OnOneSide(local, this->CornerIds.data(), a, b);
+      const bool folded = OnOneSide(local, this->CornerIds.data(), this->Kinds.data(), a, b);
       this->NumberOfFoldedFaces += folded ? 1 : 0;
       this->Neighbors[8 * (a / 6) + a % 6] = NeighborCode(b / 6, b % 6, folded, false);
       this->Neighbors[8 * (b / 6) + b % 6] = NeighborCode(a / 6, a % 6, folded, false);
     }
     else
     {
-      if (j - i > 2)
-      {
-        ++this->NumberOfNonManifoldFaces;
-      }
+      this->NumberOfNonManifoldFaces += j - i > 2 ? 1 : 0;
       for (size_t k = i; k < j; ++k)
       {
         boundary.push_back(faces[k].Owner);
@@ -360,44 +512,138 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     i = j;
   }
   std::sort(boundary.begin(), boundary.end());
+  return boundary;
+}
 
-  // The inverted side of each fold: there the ray turns back in the cell it
-  // is in (ppirayInvertedSheets.h).
-  if (this->NumberOfFoldedFaces > 0)
-  {
-    auto cellOf = [](int code) { return code == -1 ? -1 : (code < -1 ? -code - 2 : code) / 6; };
-    auto faceOf = [](int code) { return (code < -1 ? -code - 2 : code) % 6; };
-    const std::vector<unsigned char> inverted = ppiray::InvertedSheets(
-      numberOfHexahedra, 6, [&](vtkIdType h, int f) { return cellOf(this->Neighbors[8 * h + f]); },
-      [&](vtkIdType h, int f) { return this->Neighbors[8 * h + f] < -1; },
-      [&](vtkIdType h) { return std::abs(SignedVolume(local, this->CornerIds.data() + 8 * h)); });
-    for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
-    {
-      for (int f = 0; f < 6; ++f)
-      {
-        int& code = this->Neighbors[8 * h + f];
-        const int n = cellOf(code);
-        if (code < -1 && ppiray::WalksBackInPlace(inverted, h, n))
-        {
-          code = NeighborCode(n, faceOf(code), true, true);
-        }
-      }
-    }
-  }
-
-  // Boundary triangles, wound outward (VTK's hexahedron faces are outward for
-  // a right-handed cell), over a compact set of points.
-  std::vector<vtkIdType> pointMap(grid->GetNumberOfPoints(), -1);
+//------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::LinkSplitQuadrilaterals(std::vector<vtkIdType>& boundary)
+{
+  // A quadrilateral left unmatched whose two triangles (split by its
+  // diagonal) are each an unmatched triangular face of another cell (a
+  // hexahedron, wedge or pyramid next to two tetrahedra, or two wedges'
+  // triangles): each triangle's cell enters the quadrilateral's, and the
+  // quadrilateral lists the two (SplitFace(): the march takes the one its
+  // exit point lies in, listed_faces_fs.glsl).
+  std::vector<FaceKey> triangles;
   for (vtkIdType owner : boundary)
   {
     const vtkIdType h = owner / 6;
     const int f = static_cast<int>(owner % 6);
+    if (ppiray::FaceSize(this->Kinds[h], f) == 3)
+    {
+      const int* q = ppiray::LinearCellKindOf(this->Kinds[h]).Face[f];
+      const vtkIdType* c = this->CornerIds.data() + 8 * h;
+      FaceKey key{ { -1, c[q[0]], c[q[1]], c[q[2]] }, owner };
+      std::sort(key.Ids.begin(), key.Ids.end());
+      triangles.push_back(key);
+    }
+  }
+  if (triangles.empty())
+  {
+    return;
+  }
+  std::sort(triangles.begin(), triangles.end());
+  auto findTriangle = [&](std::array<vtkIdType, 4> ids) -> vtkIdType
+  {
+    std::sort(ids.begin(), ids.end());
+    const FaceKey probe{ ids, 0 };
+    auto range = std::equal_range(triangles.begin(), triangles.end(), probe);
+    return range.second - range.first == 1 ? range.first->Owner : -1;
+  };
+  const double* local = this->LocalPoints.data();
+  std::vector<unsigned char> linked(6 * this->GetNumberOfHexahedra(), 0);
+  for (vtkIdType owner : boundary)
+  {
+    const vtkIdType h = owner / 6;
+    const int f = static_cast<int>(owner % 6);
+    const int kind = this->Kinds[h];
+    if (ppiray::FaceSize(kind, f) != 4 || linked[owner])
+    {
+      continue;
+    }
     const bool second = (this->Neighbors[8 * h + 6] >> f) & 1;
+    vtkIdType pieces[2];
     for (int t = 0; t < 2; ++t)
+    {
+      std::array<vtkIdType, 4> ids = { -1, 0, 0, 0 };
+      for (int v = 0; v < 3; ++v)
+      {
+        ids[v + 1] = this->CornerIds[8 * h + TriangleCorner(kind, f, t, v, second)];
+      }
+      pieces[t] = findTriangle(ids);
+    }
+    if (pieces[0] < 0 || pieces[1] < 0 || pieces[0] / 6 == h || pieces[1] / 6 == h ||
+        linked[pieces[0]] || linked[pieces[1]] ||
+        OnOneSide(local, this->CornerIds.data(), this->Kinds.data(), owner, pieces[0]) ||
+        OnOneSide(local, this->CornerIds.data(), this->Kinds.data(), owner, pieces[1]))
+    {
+      continue;
+    }
+    // The list: (2, codes), padded to a whole texel.
+    this->Neighbors[8 * h + f] = SplitFace() + static_cast<int>(this->Neighbors.size() / 4);
+    this->Neighbors.insert(this->Neighbors.end(),
+      { 2, NeighborCode(pieces[0] / 6, static_cast<int>(pieces[0] % 6), false, false),
+        NeighborCode(pieces[1] / 6, static_cast<int>(pieces[1] % 6), false, false), -1 });
+    for (vtkIdType piece : pieces)
+    {
+      this->Neighbors[8 * (piece / 6) + piece % 6] = NeighborCode(h, f, false, false);
+      linked[piece] = 1;
+    }
+    linked[owner] = 1;
+    ++this->NumberOfSplitQuadrilaterals;
+  }
+  boundary.erase(std::remove_if(boundary.begin(), boundary.end(),
+                   [&](vtkIdType owner) { return linked[owner] != 0; }),
+    boundary.end());
+}
+
+//------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::MarkTurnBacks()
+{
+  // The inverted side of each fold: there the ray turns back in the cell it
+  // is in (ppirayInvertedSheets.h).
+  const double* local = this->LocalPoints.data();
+  const vtkIdType count = this->GetNumberOfHexahedra();
+  auto cellOf = [](int code) { return code == -1 ? -1 : (code < -1 ? -code - 2 : code) / 6; };
+  auto faceOf = [](int code) { return (code < -1 ? -code - 2 : code) % 6; };
+  const std::vector<unsigned char> inverted = ppiray::InvertedSheets(
+    count, 6, [&](vtkIdType h, int f) { return cellOf(this->Neighbors[8 * h + f]); },
+    [&](vtkIdType h, int f) { return this->Neighbors[8 * h + f] < -1; },
+    [&](vtkIdType h)
+    { return std::abs(SignedVolume(local, this->CornerIds.data() + 8 * h, this->Kinds[h])); });
+  for (vtkIdType h = 0; h < count; ++h)
+  {
+    for (int f = 0; f < 6; ++f)
+    {
+      int& code = this->Neighbors[8 * h + f];
+      const int n = cellOf(code);
+      if (code < -1 && ppiray::WalksBackInPlace(inverted, h, n))
+      {
+        code = NeighborCode(n, faceOf(code), true, true);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::ExtractBoundary(
+  const std::vector<vtkIdType>& boundary, vtkIdType numberOfPoints)
+{
+  // Boundary triangles, wound outward (the kinds' faces are outward for a
+  // right-handed cell), over a compact set of points.
+  const double* local = this->LocalPoints.data();
+  std::vector<vtkIdType> pointMap(numberOfPoints, -1);
+  for (vtkIdType owner : boundary)
+  {
+    const vtkIdType h = owner / 6;
+    const int f = static_cast<int>(owner % 6);
+    const int kind = this->Kinds[h];
+    const bool second = (this->Neighbors[8 * h + 6] >> f) & 1;
+    for (int t = 0; t < ppiray::FaceSize(kind, f) - 2; ++t)
     {
       for (int v = 0; v < 3; ++v)
       {
-        const vtkIdType id = this->CornerIds[8 * h + TriangleCorner(f, t, v, second)];
+        const vtkIdType id = this->CornerIds[8 * h + TriangleCorner(kind, f, t, v, second)];
         if (pointMap[id] < 0)
         {
           pointMap[id] = static_cast<vtkIdType>(this->BoundaryPoints.size() / 3);
@@ -411,8 +657,6 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
       this->BoundaryFaces.push_back(static_cast<int>(12 * h + 2 * f + t));
     }
   }
-  this->Modified();
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -453,16 +697,8 @@ bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScala
       nanCells += hasNaN ? 1 : 0;
       continue;
     }
-    double corners[8][3], frame[12], c[8];
-    for (int i = 0; i < 8; ++i)
-    {
-      std::copy_n(this->LocalPoints.data() + 3 * this->CornerIds[8 * h + i], 3, corners[i]);
-    }
-    vtkHexahedronCoefficients::FitCoefficients(corners, s, frame, c);
-    for (int k = 0; k < 8; ++k)
-    {
-      out[k] = static_cast<float>(c[k]);
-    }
+    CellCoefficients(
+      this->Kinds[h], this->LocalPoints.data(), this->CornerIds.data() + 8 * h, s, out);
   }
   this->NumberOfNaNScalars = nanCells.load();
   this->Modified();
@@ -478,6 +714,7 @@ void vtkHexahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
   os << indent << "NumberOfUnfoldedFaces: " << this->NumberOfUnfoldedFaces << "\n";
   os << indent << "NumberOfFoldedFaces: " << this->NumberOfFoldedFaces << "\n";
+  os << indent << "NumberOfSplitQuadrilaterals: " << this->NumberOfSplitQuadrilaterals << "\n";
   os << indent << "NumberOfNaNScalars: " << this->NumberOfNaNScalars << "\n";
   os << indent << "NumberOfSingularFrames: " << this->NumberOfSingularFrames << "\n";
   os << indent << "NumberOfFlatHexahedra: " << this->NumberOfFlatHexahedra << "\n";

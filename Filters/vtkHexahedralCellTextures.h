@@ -1,7 +1,7 @@
 /**
  * @class   vtkHexahedralCellTextures
- * @brief   per-hexahedron "cell textures" for ray casting hexahedra without
- *          subdividing them, built on the CPU
+ * @brief   per-cell "cell textures" for ray casting hexahedra, wedges,
+ *          pyramids and tetrahedra without subdividing them, built on the CPU
  *
  * Per hexahedron, 160 bytes (Miranda 2011, Sec. 3.3 stores 248: twelve face
  * planes, six neighbours and eight world-frame coefficients):
@@ -14,16 +14,23 @@
  *   the rule of ppirayConformingTetrahedra.h (the diagonal through the smallest
  *   point id), so both cells sharing a face see the same two triangles;
  * - coefficients: c0..c7 of the trilinear field in the cell's frame (origin
- *   corner 0, axes to corners 1, 3, 4; vtkHexahedronCoefficients), c0 =
+ *   corner 0, axes to corners 1, 3, 4; vtkHexahedronCoefficients); of a
+ *   wedge or tetrahedron VTK's interpolation in its frame (axes to corners
+ *   1, 2, 3: exact for an affine wedge and any tetrahedron); of a pyramid its
+ *   five corner values (the GPU evaluates VTK's pyramid); c0 =
  *   TransparentCellOffset() for a cell touching a NaN scalar or marked
  *   HIDDENCELL in the ghost array (ppirayHiddenCells.h).
  *
  * Also the boundary triangles (two per boundary face, split by the same rule,
  * wound outward) with their points and, per triangle, 12 h + 2 f + (0 or 1).
  *
- * Cells: VTK_HEXAHEDRON, VTK_VOXEL and the corners of quadratic and
- * higher-order hexahedra; zero-volume ones (pinched-out layers) are left
- * out and counted (GetNumberOfFlatHexahedra()). A grid with other cells is only counted
+ * Cells: VTK_HEXAHEDRON, VTK_VOXEL, VTK_WEDGE, VTK_PYRAMID, VTK_TETRA and
+ * the corners of their quadratic and higher-order forms, in one grid (a
+ * "hexahedron" below is any of them: its kind, ppirayLinearCellKinds.h, is
+ * stored with its neighbours; a kind with fewer than 8 corners repeats
+ * corner 0 in the unused slots, and has fewer faces). Zero-volume ones
+ * (pinched-out layers) are left out and counted (GetNumberOfFlatHexahedra()).
+ * A grid with other cells, or of tetrahedra only, is only counted
  * (GetNumberOfOtherCells(); BuildGeometry() returns false and builds
  * nothing): the ray caster renders such meshes as tetrahedra. No OpenGL here.
  */
@@ -68,6 +75,11 @@ public:
    * -1 on the boundary.
    */
   static constexpr int TurnBack() { return 1 << 29; }
+  /**
+   * SplitFace() + i: a quadrilateral met by two triangular faces of other
+   * cells, its list at neighbour texel i: 2, then their codes.
+   */
+  static constexpr int SplitFace() { return 1 << 30; }
   static int NeighborCode(vtkIdType hexahedron, int face, bool folded, bool turnBack)
   {
     const int code = static_cast<int>(6 * hexahedron + face);
@@ -80,6 +92,10 @@ public:
   /** The largest distance between two corners of one hexahedron. */
   double GetMaximumCellDiameter() const { return this->MaximumCellDiameter; }
   /** Input cell id of each hexahedron. */
+  /** The kind of each cell (ppiray::LinearCellKind). */
+  const std::vector<unsigned char>& GetKinds() const { return this->Kinds; }
+  /** Cells of a kind (ppiray::LinearCellKind) kept. */
+  vtkIdType GetNumberOfCellsOfKind(int kind) const { return this->NumberOfCellsOfKind[kind]; }
   const std::vector<vtkIdType>& GetCellIds() const { return this->CellIds; }
   /** Point ids, 8 per hexahedron, in the (right-handed) order of the corners. */
   const std::vector<vtkIdType>& GetCornerIds() const { return this->CornerIds; }
@@ -87,7 +103,7 @@ public:
   const std::vector<float>& GetCorners() const { return this->Corners; }
   /**
    * 8 ints per hexahedron (2 RGBA texels): 6 neighbour codes (NeighborCode():
-   * the neighbour and the face it is entered by), the diagonal mask, 0.
+   * the neighbour and the face it is entered by), the diagonal mask, the kind.
    */
   const std::vector<int>& GetNeighbors() const { return this->Neighbors; }
   /** 8 floats per hexahedron (2 RGBA texels). */
@@ -108,6 +124,8 @@ public:
   vtkGetMacro(NumberOfUnfoldedFaces, vtkIdType);
   /** Shared faces whose two hexahedra lie on one side of them (a tangled mesh). */
   vtkGetMacro(NumberOfFoldedFaces, vtkIdType);
+  /** Quadrilaterals met by two triangles of other cells (SplitFace()). */
+  vtkGetMacro(NumberOfSplitQuadrilaterals, vtkIdType);
   vtkGetMacro(NumberOfNaNScalars, vtkIdType);
   /**
    * Hexahedra whose frame is singular, |det M| <= 1e-6 |a| |b| |c|, at every
@@ -137,17 +155,33 @@ public:
   }
   ///@}
 
-  /** Corner v (0..2) of triangle t (0, 1) of face f, given the face's diagonal bit. */
-  static int TriangleCorner(int f, int t, int v, bool secondDiagonal);
+  /**
+   * Corner v (0..2) of triangle t (0, 1; a triangular face has only 0) of
+   * face f of a cell of kind `kind`, given the face's diagonal bit.
+   */
+  static int TriangleCorner(int kind, int f, int t, int v, bool secondDiagonal);
 
 protected:
   vtkHexahedralCellTextures() = default;
   ~vtkHexahedralCellTextures() override = default;
 
+  // The steps of BuildGeometry().
+  void Clear();
+  bool CollectCells(vtkUnstructuredGrid* grid); // false: not for these textures
+  void DropFlatCells();
+  void OrientCells();
+  void StoreCorners();
+  std::vector<vtkIdType> MatchFaces(); // the boundary faces, 6 h + f
+  void LinkSplitQuadrilaterals(std::vector<vtkIdType>& boundary);
+  void MarkTurnBacks();
+  void ExtractBoundary(const std::vector<vtkIdType>& boundary, vtkIdType numberOfPoints);
+
   double Origin[3] = { 0, 0, 0 };
   double Length = 0;
   double MaximumCellDiameter = 0;
   std::vector<vtkIdType> CellIds;
+  std::vector<unsigned char> Kinds;
+  vtkIdType NumberOfCellsOfKind[4] = { 0, 0, 0, 0 };
   std::vector<unsigned char> Hidden; // ppirayHiddenCells.h
   std::vector<vtkIdType> CornerIds;
   std::vector<float> Corners;
@@ -161,6 +195,7 @@ protected:
   vtkIdType NumberOfNonManifoldFaces = 0;
   vtkIdType NumberOfUnfoldedFaces = 0;
   vtkIdType NumberOfFoldedFaces = 0;
+  vtkIdType NumberOfSplitQuadrilaterals = 0;
   vtkIdType NumberOfNaNScalars = 0;
   vtkIdType NumberOfSingularFrames = 0;
   vtkIdType NumberOfFlatHexahedra = 0;

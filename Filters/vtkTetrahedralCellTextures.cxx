@@ -58,6 +58,8 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->NumberOfQuadraticCells = split.NumberOfQuadraticCells;
   this->Tets = std::move(split.Tets);
   this->CellIds = std::move(split.CellIds);
+  this->Added = std::move(split.Added);
+  this->NumberOfPolyhedra = split.NumberOfPolyhedra;
   this->Unsupported = std::move(split.Unsupported);
   this->Hidden = ppiray::HiddenCells(grid, this->CellIds);
   this->NumberOfHiddenTetrahedra = std::count(this->Hidden.begin(), this->Hidden.end(), 1);
@@ -84,7 +86,13 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   }
 
   this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
-  const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
+  for (size_t i = 0; i < this->Added.Points.size(); ++i)
+  {
+    // Added points (polyhedra) lie inside the cells, within the bounds.
+    this->LocalPoints.push_back(this->Added.Points[i] - this->Origin[i % 3]);
+  }
+  this->NumberOfGridPoints = grid->GetNumberOfPoints();
+  const vtkIdType numberOfPoints = this->NumberOfGridPoints + this->Added.GetNumberOfPoints();
 
   const bool compact = this->Layout == COMPACT;
   if (compact && numberOfPoints > InvertedCorners())
@@ -342,6 +350,15 @@ bool vtkTetrahedralCellTextures::FacesTowards(vtkIdType t, const int corner[3],
 }
 
 //------------------------------------------------------------------------------
+double vtkTetrahedralCellTextures::PointValue(
+  vtkDataArray* values, vtkIdType id, int component) const
+{
+  return id < this->NumberOfGridPoints
+           ? values->GetComponent(id, component)
+           : this->Added.Value(id - this->NumberOfGridPoints, values, component);
+}
+
+//------------------------------------------------------------------------------
 bool vtkTetrahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScalars, int component)
 {
   const vtkIdType numberOfTets = this->GetNumberOfTetrahedra();
@@ -363,7 +380,7 @@ bool vtkTetrahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScal
     const vtkIdType numberOfPoints = static_cast<vtkIdType>(this->PointTexels.size() / 4);
     for (vtkIdType i = 0; i < numberOfPoints; ++i)
     {
-      const double s = cellScalars ? 0.0 : scalars->GetComponent(i, component);
+      const double s = cellScalars ? 0.0 : this->PointValue(scalars, i, component);
       this->PointTexels[4 * i + 3] = std::isnan(s) ? 0.0f : static_cast<float>(s);
     }
   }
@@ -391,7 +408,7 @@ bool vtkTetrahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScal
     for (int v = 0; v < 4; ++v)
     {
       p[v] = local + 3 * tets[4 * t + v];
-      s[v] = scalars->GetComponent(tets[4 * t + v], component);
+      s[v] = this->PointValue(scalars, tets[4 * t + v], component);
       hasNaN = hasNaN || std::isnan(s[v]);
     }
     if (hasNaN)
@@ -440,6 +457,7 @@ void vtkTetrahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSplitCells: " << this->NumberOfSplitCells << "\n";
   os << indent << "NumberOfQuadraticCells: " << this->NumberOfQuadraticCells << "\n";
   os << indent << "NumberOfLinkedFaces: " << this->NumberOfLinkedFaces << "\n";
+  os << indent << "NumberOfPolyhedra: " << this->NumberOfPolyhedra << "\n";
   os << indent << "NumberOfSplitFaces: " << this->NumberOfSplitFaces << "\n";
   os << indent << "MaximumPiecesPerFace: " << this->MaximumPiecesPerFace << "\n";
   os << indent << "NumberOfUnlinkedFaces: " << this->NumberOfUnlinkedFaces << "\n";

@@ -39,6 +39,7 @@
 #define vtkTetrahedralCellTextures_h
 
 #include "ppirayFiltersModule.h" // for export macro
+#include "ppirayPolyhedra.h"     // for ppiray::AddedPoints
 #include "vtkObject.h"
 
 #include <vector> // for std::vector
@@ -188,6 +189,12 @@ public:
    */
   vtkGetMacro(NumberOfLinkedFaces, vtkIdType);
   vtkGetMacro(NumberOfSplitFaces, vtkIdType);
+  /**
+   * Polyhedra split into tetrahedra (ppirayPolyhedra.h: a cone from an added
+   * point at their centre; faces of five or more corners fanned from an added
+   * point), counted in GetNumberOfSplitCells() too.
+   */
+  vtkGetMacro(NumberOfPolyhedra, vtkIdType);
   vtkGetMacro(MaximumPiecesPerFace, int);
   vtkGetMacro(NumberOfUnlinkedFaces, vtkIdType);
   ///@}
@@ -254,7 +261,12 @@ protected:
   std::vector<unsigned int> BoundaryTriangles;
   std::vector<int> BoundaryFaces;
   std::vector<vtkIdType> Unsupported;
-  std::vector<double> LocalPoints; // 3 per grid point, relative to Origin
+  std::vector<double> LocalPoints;  // 3 per grid point and added point, relative to Origin
+  ppiray::AddedPoints Added;        // points the split of polyhedra adds
+  vtkIdType NumberOfGridPoints = 0; // added points are numbered from here
+  vtkIdType NumberOfPolyhedra = 0;
+  // The value at point `id`: a grid point's, or an added point's interpolation.
+  double PointValue(vtkDataArray* values, vtkIdType id, int component) const;
   vtkIdType NumberOfDegenerateTetrahedra = 0;
   vtkIdType NumberOfInvertedTetrahedra = 0;
   vtkIdType NumberOfNonManifoldFaces = 0;

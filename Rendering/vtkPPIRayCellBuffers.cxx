@@ -9,6 +9,16 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include "cubic_fs.h"
+#include "gauss_legendre_fs.h"
+#include "hexahedron_accurate_fs.h"
+#include "hexahedron_fast_fs.h"
+#include "listed_faces_fs.h"
+#include "march_common_fs.h"
+#include "march_fs.h"
+#include "projection_cubic_fs.h"
+#include "stretch_fs.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -66,6 +76,27 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
          << this->Arrays[i].TexelFunction(arrays[i].Name, sampler, integers ? "ivec4" : "vec4");
   }
   return glsl.str();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPPIRayCellBuffers::GetMarchShader(bool accurateCubics) const
+{
+  const Features features = this->GetFeatures();
+  std::string march = march_fs;
+  vtkShaderProgram::Substitute(march, "//PPIRay::MarchCommon::Impl", march_common_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::Cells::Dec",
+    this->LayoutDeclarations() +
+      "const bool FLAT_CELLS = " + (features.FlatCells ? "true" : "false") +
+      ";\nconst bool FOLDS = " + (features.Folds ? "true" : "false") + ";\n");
+  vtkShaderProgram::Substitute(march, "//PPIRay::Cubic::Impl", cubic_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::GaussLegendre::Impl", gauss_legendre_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::MonotonicPiece::Impl",
+    accurateCubics ? hexahedron_accurate_fs : hexahedron_fast_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::ProjectionCubic::Impl", projection_cubic_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::CellKind::Impl", this->GetCellShader());
+  vtkShaderProgram::Substitute(march, "//PPIRay::Stretch::Impl", stretch_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::ListedFaces::Impl", listed_faces_fs);
+  return march;
 }
 
 //------------------------------------------------------------------------------

@@ -109,12 +109,14 @@ public:
   virtual double GetMaximumSegmentLength() const = 0;
 
   /**
-   * The march traversal's GLSL with its layout and features declared (for
-   * hexahedra, with their field along the ray and `hexahedronMode`'s
-   * integration of it); the integration mode, transfer function and
-   * isosurfaces are left to vtkPPIRayMarchShader.
+   * The march pass's GLSL (glsl/march_fs.glsl, the one march for every cell
+   * kind) with this kind's cells (GetCellShader()), its layout and features
+   * declared, and the integration of a cubic stretch (`accurateCubics`:
+   * HEXAHEDRON_ACCURATE's quadrature, else HEXAHEDRON_FAST's linear pieces);
+   * the integration mode, transfer function and isosurfaces are left to
+   * vtkPPIRayMarchShader.
    */
-  virtual std::string GetMarchShader(int hexahedronMode) const = 0;
+  std::string GetMarchShader(bool accurateCubics) const;
 
   /** Every cell lies within this distance of GetOrigin(). */
   virtual double GetBoundingRadius() const = 0;
@@ -174,6 +176,9 @@ protected:
     bool Field;     // rebuilt with the field (else with the geometry)
   };
   static constexpr int MaximumArrays = 4;
+  // The cell kind's GLSL (march_fs.glsl lists what it supplies), with any
+  // declarations it needs beyond LayoutDeclarations().
+  virtual std::string GetCellShader() const = 0;
   // The CPU arrays, laid out as GetLayout() says (at most MaximumArrays).
   virtual std::vector<CellArray> GetCellArrays() const = 0;
   // The boundary the entry pass draws.

@@ -5,24 +5,36 @@
 
 #include "vtkShaderProgram.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include "ppirayPlaneSection.h"
 
-#include "gauss_legendre_fs.h"
-#include "hexahedron_accurate_fs.h"
-#include "hexahedron_fast_fs.h"
+#include "cell_linear_fs.h"
 #include "hexahedron_field_fs.h"
-#include "march_common_fs.h"
-#include "march_hexahedra_fs.h"
-#include "projection_cubic_fs.h"
+#include "pyramid_field_fs.h"
+
+#include "ppirayLinearCellKinds.h"
+
+#include <algorithm>
+#include <sstream>
 
 //------------------------------------------------------------------------------
 vtkPPIRayCellBuffers::Layout vtkPPIRayHexahedralCellBuffers::GetLayout() const
 {
+  // No re-entry lists (a code past SplitFace() is a split quadrilateral's
+  // list); a face's "planes": its cell and the 6 x 2 triangles outsideFace() visits.
   using Cells = vtkHexahedralCellTextures;
   return { Cells::CornerTexels(), Cells::NeighborTexels(), Cells::CoefficientTexels(), 6,
-    Cells::TurnBack(), 0.0f, Cells::TransparentCellOffset() };
+    Cells::TurnBack(), 0.0f, Cells::TransparentCellOffset(), Cells::SplitFace(), VTK_INT_MAX, 13,
+    0 };
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPPIRayHexahedralCellBuffers::GetCellName() const
+{
+  const vtkHexahedralCellTextures& cells = *this->Cells;
+  return cells.GetNumberOfCellsOfKind(ppiray::HEXAHEDRON_KIND) < cells.GetNumberOfHexahedra()
+           ? "cells"
+           : "hexahedra";
 }
 
 //------------------------------------------------------------------------------
@@ -44,25 +56,45 @@ vtkPPIRayCellBuffers::Features vtkPPIRayHexahedralCellBuffers::GetFeatures() con
 {
   Features features;
   features.Folds = this->Cells->GetNumberOfFoldedFaces() > 0;
+  features.MaximumSplitPieces = this->Cells->GetNumberOfSplitQuadrilaterals() > 0 ? 2 : 0;
   return features;
 }
 
 //------------------------------------------------------------------------------
-std::string vtkPPIRayHexahedralCellBuffers::GetMarchShader(int hexahedronMode) const
+std::string vtkPPIRayHexahedralCellBuffers::GetCellShader() const
 {
-  std::string march = march_hexahedra_fs;
-  vtkShaderProgram::Substitute(march, "//PPIRay::HexahedronField::Impl", hexahedron_field_fs);
-  vtkShaderProgram::Substitute(march, "//PPIRay::Hexahedron::Impl",
-    hexahedronMode == vtkUnstructuredGridGPURayCastMapper::HEXAHEDRON_ACCURATE
-      ? hexahedron_accurate_fs
-      : hexahedron_fast_fs);
-  vtkShaderProgram::Substitute(march, "//PPIRay::GaussLegendre::Impl", gauss_legendre_fs);
-  vtkShaderProgram::Substitute(march, "//PPIRay::ProjectionCubic::Impl", projection_cubic_fs);
-  vtkShaderProgram::Substitute(march, "//PPIRay::MarchCommon::Impl", march_common_fs);
-  vtkShaderProgram::Substitute(march, "//PPIRay::Cells::Dec",
-    this->LayoutDeclarations() + "const bool FLAT_CELLS = false;\nconst bool FOLDS = " +
-      (this->GetFeatures().Folds ? "true" : "false") + ";");
-  return march;
+  // The kinds' faces, wound outward, and frames (ppirayLinearCellKinds.h).
+  std::ostringstream kinds;
+  kinds << "const int CELL_FACES[" << 24 * ppiray::NUMBER_OF_KINDS << "] = int[]("
+        << "\n  ";
+  for (int kind = 0; kind < ppiray::NUMBER_OF_KINDS; ++kind)
+  {
+    for (int f = 0; f < 6; ++f)
+    {
+      for (int v = 0; v < 4; ++v)
+      {
+        kinds << (kind || f || v ? ", " : "") << ppiray::LinearCellKindOf(kind).Face[f][v];
+      }
+    }
+  }
+  kinds << ");\nconst ivec3 CELL_FRAME[" << ppiray::NUMBER_OF_KINDS << "] = ivec3[](";
+  for (int kind = 0; kind < ppiray::NUMBER_OF_KINDS; ++kind)
+  {
+    const int* frame = ppiray::LinearCellKindOf(kind).Frame;
+    kinds << (kind ? ", " : "") << "ivec3(" << std::max(frame[0], 0) << ", "
+          << std::max(frame[1], 0) << ", " << std::max(frame[2], 0) << ")";
+  }
+  const vtkHexahedralCellTextures& cells = *this->Cells;
+  const bool mixed =
+    cells.GetNumberOfCellsOfKind(ppiray::HEXAHEDRON_KIND) < cells.GetNumberOfHexahedra();
+  kinds << ");\nconst bool MIXED_CELLS = " << (mixed ? "true" : "false")
+        << ";\nconst bool PYRAMID_CELLS = "
+        << (cells.GetNumberOfCellsOfKind(ppiray::PYRAMID_KIND) > 0 ? "true" : "false") << ";\n";
+  std::string glsl = cell_linear_fs;
+  vtkShaderProgram::Substitute(
+    glsl, "//PPIRay::HexahedronField::Impl", kinds.str() + hexahedron_field_fs);
+  vtkShaderProgram::Substitute(glsl, "//PPIRay::PyramidField::Impl", pyramid_field_fs);
+  return glsl;
 }
 
 //------------------------------------------------------------------------------
@@ -74,7 +106,7 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
   hexes.BuildGeometry(grid);
   if (hexes.GetNumberOfHexahedra() == 0)
   {
-    return BuildResult::Declined;
+    return BuildResult::Declined; // tetrahedra only, or nothing to render natively
   }
   if (hexes.GetNumberOfOtherCells() > 0 &&
       grid->GetCellData()->GetArray(ppiray::BoundaryCellArrayName))
@@ -87,15 +119,16 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
   if (hexes.GetNumberOfOtherCells() > 0)
   {
     vtkWarningWithObjectMacro(
-      reporter, << "Rendering hexahedra without subdivision needs a mesh of hexahedra only; "
+      reporter, << "Rendering cells without subdivision needs a mesh of hexahedra, voxels, wedges, "
+                   "pyramids and tetrahedra only; "
                 << hexes.GetNumberOfOtherCells() << " other cells: splitting all "
                 << grid->GetNumberOfCells() << " cells into tetrahedra instead.");
     return BuildResult::Declined;
   }
   if (hexes.GetNumberOfFlatHexahedra() > 0)
   {
-    vtkWarningWithObjectMacro(
-      reporter, << hexes.GetNumberOfFlatHexahedra() << " zero-volume hexahedra skipped.");
+    vtkWarningWithObjectMacro(reporter,
+      << hexes.GetNumberOfFlatHexahedra() << " zero-volume " << this->GetCellName() << " skipped.");
   }
   if (hexes.GetNumberOfSingularFrames() > 0)
   {
@@ -118,14 +151,13 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
   {
     vtkWarningWithObjectMacro(reporter,
       << hexes.GetNumberOfQuadraticCells()
-      << " quadratic (or higher-order) hexahedra are rendered through their linear corners "
-         "only.");
+      << " quadratic (or higher-order) cells are rendered through their linear corners only.");
   }
   if (hexes.GetNumberOfNonManifoldFaces() > 0)
   {
-    vtkWarningWithObjectMacro(
-      reporter, << hexes.GetNumberOfNonManifoldFaces()
-                << " faces are shared by more than two hexahedra (non-manifold mesh).");
+    vtkWarningWithObjectMacro(reporter, << hexes.GetNumberOfNonManifoldFaces()
+                                        << " faces are shared by more than two "
+                                        << this->GetCellName() << " (non-manifold mesh).");
   }
   this->ReportFoldedFaces(hexes.GetNumberOfFoldedFaces(), reporter);
   return BuildResult::Built;
@@ -148,7 +180,7 @@ void vtkPPIRayHexahedralCellBuffers::PlaneSection(
       p[v] = glm::dvec3(x[0], x[1], x[2]);
     }
     triangles.clear();
-    if (ppiray::HexahedronSection(p, plane, triangles))
+    if (ppiray::CellSection(cells.GetKinds()[h], p, plane, triangles))
     {
       AppendSection(triangles, h, vertices);
     }

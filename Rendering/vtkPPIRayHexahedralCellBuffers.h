@@ -3,9 +3,10 @@
  * @brief   hexahedra on the GPU without subdivision: corners, neighbour codes, trilinear field
  *
  * vtkHexahedralCellTextures (a mesh of hexahedra and voxels only) behind
- * vtkPPIRayCellBuffers, marched by glsl/march_hexahedra_fs.glsl with the
- * field along the ray (hexahedron_field_fs.glsl) integrated as the
- * hexahedron mode says (hexahedron_accurate_fs.glsl, hexahedron_fast_fs.glsl).
+ * vtkPPIRayCellBuffers, marched by glsl/march_fs.glsl as the cell kind
+ * glsl/cell_hexahedron_fs.glsl: the field along the ray a cubic
+ * (hexahedron_field_fs.glsl) integrated as the hexahedron mode says
+ * (hexahedron_accurate_fs.glsl, hexahedron_fast_fs.glsl).
  * BuildGeometry() declines any other mesh, and one whose cells have no frame
  * at any corner: those are rendered as tetrahedra. Internal to
  * PPIRay::Rendering.
@@ -23,16 +24,21 @@ class vtkPPIRayHexahedralCellBuffers : public vtkPPIRayCellBuffers
 public:
   Layout GetLayout() const override;
   Features GetFeatures() const override;
-  const char* GetCellName() const override { return "hexahedra"; }
+  const char* GetCellName() const override;
   BuildResult BuildGeometry(vtkUnstructuredGrid* grid, vtkObject* reporter) override;
   const double* GetOrigin() const override { return this->Cells->GetOrigin(); }
   vtkIdType GetNumberOfCells() const override { return this->Cells->GetNumberOfHexahedra(); }
   double GetMaximumSegmentLength() const override { return this->Cells->GetMaximumCellDiameter(); }
-  std::string GetMarchShader(int hexahedronMode) const override;
   double GetBoundingRadius() const override { return 0.5 * this->Cells->GetLength(); }
   void PlaneSection(const glm::dvec4& plane, std::vector<float>& vertices) const override;
+  /** Cells of a kind (ppiray::LinearCellKind) in the last geometry built. */
+  vtkIdType GetNumberOfCellsOfKind(int kind) const
+  {
+    return this->Cells->GetNumberOfCellsOfKind(kind);
+  }
 
 protected:
+  std::string GetCellShader() const override;
   std::vector<CellArray> GetCellArrays() const override;
   Boundary GetBoundary() const override
   {

@@ -6,8 +6,7 @@
 #include "ppirayPlaneSection.h"
 #include "ppirayVTKCompatibility.h"
 
-#include "march_common_fs.h"
-#include "march_fs.h"
+#include "cell_tetrahedron_fs.h"
 #include "tetrahedron_corners_fs.h"
 #include "tetrahedron_planes_fs.h"
 
@@ -90,14 +89,10 @@ vtkPPIRayCellBuffers::Features vtkPPIRayTetrahedralCellBuffers::GetFeatures() co
 }
 
 //------------------------------------------------------------------------------
-std::string vtkPPIRayTetrahedralCellBuffers::GetMarchShader(int) const
+std::string vtkPPIRayTetrahedralCellBuffers::GetCellShader() const
 {
-  std::string march = march_fs;
-  vtkShaderProgram::Substitute(march, "//PPIRay::MarchCommon::Impl", march_common_fs);
-  const Features features = this->GetFeatures();
-  std::string declarations = this->LayoutDeclarations() +
-                             "const bool FLAT_CELLS = " + (features.FlatCells ? "true" : "false") +
-                             ";\nconst bool FOLDS = " + (features.Folds ? "true" : "false") + ";\n";
+  std::string cells = cell_tetrahedron_fs;
+  std::string declarations;
   const bool compact = this->Cells->GetLayout() == vtkTetrahedralCellTextures::COMPACT;
   if (compact)
   {
@@ -114,12 +109,11 @@ std::string vtkPPIRayTetrahedralCellBuffers::GetMarchShader(int) const
               << vtkUnstructuredGridCellAdjacency::FaceVertex(f, 2) << ")";
     }
     corners << ");\n";
-    declarations += corners.str();
+    declarations = corners.str();
   }
-  vtkShaderProgram::Substitute(march, "//PPIRay::Cells::Dec", declarations);
-  vtkShaderProgram::Substitute(march, "//PPIRay::TetrahedronCells::Impl",
-    compact ? tetrahedron_corners_fs : tetrahedron_planes_fs);
-  return march;
+  vtkShaderProgram::Substitute(cells, "//PPIRay::TetrahedronLayout::Impl",
+    declarations + (compact ? tetrahedron_corners_fs : tetrahedron_planes_fs));
+  return cells;
 }
 
 //------------------------------------------------------------------------------

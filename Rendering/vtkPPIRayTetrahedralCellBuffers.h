@@ -4,8 +4,9 @@
  *
  * vtkTetrahedralCellTextures (any mesh of 3D linear cells, split into
  * conforming tetrahedra) behind vtkPPIRayCellBuffers, marched by
- * glsl/march_fs.glsl with the cells read as the layout says
- * (tetrahedron_planes_fs.glsl, tetrahedron_corners_fs.glsl). Internal to
+ * glsl/march_fs.glsl as the cell kind glsl/cell_tetrahedron_fs.glsl, the
+ * cells read as the layout says (tetrahedron_planes_fs.glsl,
+ * tetrahedron_corners_fs.glsl). Internal to
  * PPIRay::Rendering.
  */
 #ifndef vtkPPIRayTetrahedralCellBuffers_h
@@ -27,7 +28,6 @@ public:
   const double* GetOrigin() const override { return this->Cells->GetOrigin(); }
   vtkIdType GetNumberOfCells() const override { return this->Cells->GetNumberOfTetrahedra(); }
   double GetMaximumSegmentLength() const override { return this->Cells->GetMaximumEdgeLength(); }
-  std::string GetMarchShader(int hexahedronMode) const override;
   double GetBoundingRadius() const override { return 0.5 * this->Cells->GetLength(); }
   void PlaneSection(const glm::dvec4& plane, std::vector<float>& vertices) const override;
 
@@ -49,6 +49,7 @@ public:
   vtkTetrahedralCellTextures* GetTextures() { return this->Cells; }
 
 protected:
+  std::string GetCellShader() const override;
   std::vector<CellArray> GetCellArrays() const override;
   Boundary GetBoundary() const override
   {

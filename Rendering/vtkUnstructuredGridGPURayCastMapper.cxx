@@ -1,5 +1,7 @@
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
+#include "ppirayLinearCellKinds.h"
+
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -367,6 +369,14 @@ const char* vtkUnstructuredGridGPURayCastMapper::GetHexahedronModeAsString()
 vtkIdType vtkUnstructuredGridGPURayCastMapper::GetNumberOfHexahedra()
 {
   vtkInternals& in = *this->Internals;
+  return in.Cells == &in.Hexahedra ? in.Hexahedra.GetNumberOfCellsOfKind(ppiray::HEXAHEDRON_KIND)
+                                   : 0;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkUnstructuredGridGPURayCastMapper::GetNumberOfNativeCells()
+{
+  vtkInternals& in = *this->Internals;
   return in.Cells == &in.Hexahedra ? in.Hexahedra.GetNumberOfCells() : 0;
 }
 
@@ -720,8 +730,9 @@ void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolum
     this->BlendMode >= MAXIMUM_INTENSITY_BLEND && this->BlendMode <= ADDITIVE_BLEND;
   const int projection = projects ? this->BlendMode : 0;
   vtkOpenGLQuadHelper* march = in.MarchShader.Ready(context,
-    in.Cells->GetMarchShader(this->HexahedronMode), in.Integrator->GetShaderCode(),
-    vtkPPIRayIsoSurfaceUniforms::Declarations(isoMode), projection, this);
+    in.Cells->GetMarchShader(this->HexahedronMode == HEXAHEDRON_ACCURATE),
+    in.Integrator->GetShaderCode(), vtkPPIRayIsoSurfaceUniforms::Declarations(isoMode), projection,
+    this);
   if (!march)
   {
     return;

@@ -258,10 +258,17 @@ public:
   ///@}
 
   /**
-   * Number of hexahedra the last frame rendered natively (0 when the mesh was
-   * split into tetrahedra).
+   * Number of hexahedra (and voxels) the last frame rendered natively (0 when
+   * the mesh was split into tetrahedra).
    */
   vtkIdType GetNumberOfHexahedra();
+
+  /**
+   * Number of cells the last frame rendered natively, without subdivision:
+   * hexahedra, voxels, wedges, pyramids and, in a mesh of those, tetrahedra
+   * (0 when the mesh was split into tetrahedra).
+   */
+  vtkIdType GetNumberOfNativeCells();
 
   ///@{
   /**

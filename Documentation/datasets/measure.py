@@ -34,8 +34,9 @@ def measure(grid, size):
         window.Render()
         times.append(1000 * (time.perf_counter() - start))
     gpu = window_rgb(window)
-    cells = mapper.GetNumberOfTetrahedra() or mapper.GetNumberOfHexahedra()
-    kind = "hexahedra" if mapper.GetNumberOfHexahedra() else "tetrahedra"
+    cells = mapper.GetNumberOfTetrahedra() or mapper.GetNumberOfNativeCells()
+    kind = ("tetrahedra" if mapper.GetNumberOfTetrahedra() else
+            "hexahedra" if mapper.GetNumberOfHexahedra() == cells else "cells natively")
     peels = mapper.GetNumberOfPeels()
     window.Finalize()  # one X connection at a time
     reference = ppiray.vtkUnstructuredGridReferenceRenderer()

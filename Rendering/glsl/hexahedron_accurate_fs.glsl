@@ -45,6 +45,7 @@ void integrateCubicPiece(vec4 w, float xA, float xB, float sA, float sB, vec4 tf
 
 // One monotonic piece [xA, x1] of the cubic (sA to s1), split at every
 // control point it crosses; not integrated where transparent (transparentSpan).
+// Out of loops: stops at a control point, cutAt that far past xA.
 int integrateMonotonicPiece(vec4 w, float xA, float x1, float sA, float s1, int k,
   inout vec4 color)
 {
@@ -56,8 +57,14 @@ int integrateMonotonicPiece(vec4 w, float xA, float x1, float sA, float s1, int 
   }
   float ds = s1 - sA;
   vec4 tfA = transferFunction(sA, k);
-  for (int i = 0; i <= n && spendLoops(CUBIC_PIECE_LOOPS); ++i)
+  float xStart = xA;
+  for (int i = 0; i <= n; ++i)
   {
+    if (!spendLoops(CUBIC_PIECE_LOOPS))
+    {
+      cutAt = xA - xStart;
+      break;
+    }
     float sB;
     int nextK = nextControlCrossing(ds, s1, k, sB);
     float xB = nextK == k ? x1 : cubicCrossing(w, sB, xA, x1);

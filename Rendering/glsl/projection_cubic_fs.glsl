@@ -4,7 +4,9 @@
 // monotonic piece, kept to AverageIPScalarRange (average), split at every
 // control point crossed (cubicCrossing), and int tau(s) n(s) dx on a sub-piece
 // by 4-point Gauss-Legendre: tau and n are linear in s there, so the
-// integrand is a polynomial of degree 6 in x and the rule is exact.
+// integrand is a polynomial of degree 6 in x and the rule is exact. Out of
+// loops: stops at a control point, cutAt that far along the stretch (the
+// extremes are met whole first).
 
 // int tau n dx over [xA, xB], tau linear from tauA at sA to tauB at sB.
 float cubicPieceMoment(vec4 w, float xA, float xB, float sA, float sB, float tauA, float tauB)
@@ -63,15 +65,20 @@ void projectCubicStretch(vec4 w, float len, inout int k, inout vec3 state)
       xA = xFrom;
       sA = sFrom;
       sEnd = sTo;
-      state.y += xEnd - xA;
     }
     k = controlInterval(sA, k);
     float ds = sEnd - sA;
-    for (int i = 0; i <= n && spendLoops(1 + 32); ++i)
+    for (int i = 0; i <= n; ++i)
     {
+      if (!spendLoops(1 + 32))
+      {
+        cutAt = xA;
+        return;
+      }
       float sB;
       int nextK = nextControlCrossing(ds, sEnd, k, sB);
       float xB = nextK == k ? xEnd : cubicCrossing(w, sB, xA, xEnd);
+      state.y += BLEND == 3 ? xB - xA : 0.0;
       state.x += cubicPieceMoment(
         w, xA, xB, sA, sB, transferFunction(sA, k).a, transferFunction(sB, k).a);
       if (nextK == k)

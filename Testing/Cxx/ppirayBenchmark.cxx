@@ -10,7 +10,7 @@
 //                   [--views N] [--peer-views N] [--inside] [--check N]
 //                   [--transfer-function ramp|realistic|cutoff|detailed] [--breakdown]
 //                   [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,ppiray-compact,
-//                              pt,raycast,zsweep]
+//                              ppiray-subdivide,pt,raycast,zsweep]
 //
 // --check N: after its frames, each PPIRay mapper renders the last view at
 // N x N and every pixel is compared with the CPU reference renderer (p99 and
@@ -453,8 +453,8 @@ int main(int argc, char* argv[])
         << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]"
            " [--views N] [--peer-views N] [--inside] [--check N]"
            " [--transfer-function ramp|realistic|cutoff|detailed] [--breakdown]"
-           " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,ppiray-compact,pt,raycast,"
-           "zsweep]\n\n"
+           " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,ppiray-compact,"
+           "ppiray-subdivide,pt,raycast,zsweep]\n\n"
            "Frame time of PPIRay against VTK's unstructured volume mappers on one scene, same\n"
            "run: median ms per frame over an orbit of views after a warm-up frame.\n"
            "  --file MESH.vtu     a tetrahedral mesh and its point scalars (default: the wavelet)\n"
@@ -476,6 +476,8 @@ int main(int argc, char* argv[])
            "  --mappers LIST      comma-separated (default ppiray,pt,raycast): ppiray (partial\n"
            "                      pre-integration), ppiray-exact, ppiray-full, ppiray-average,\n"
            "                      ppiray-compact (partial, TETRAHEDRON_COMPACT layout),\n"
+           "                      ppiray-subdivide (partial, HEXAHEDRON_SUBDIVIDE: every\n"
+           "                      cell split into tetrahedra),\n"
            "                      pt (vtkProjectedTetrahedraMapper), raycast\n"
            "                      (vtkUnstructuredGridVolumeRayCastMapper), zsweep\n"
            "                      (vtkUnstructuredGridVolumeZSweepMapper)\n";
@@ -510,9 +512,13 @@ int main(int argc, char* argv[])
   {
     std::cerr << "measuring " << name << " ..." << std::endl;
     if (name == "ppiray" || name == "ppiray-exact" || name == "ppiray-average" ||
-        name == "ppiray-full" || name == "ppiray-compact")
+        name == "ppiray-full" || name == "ppiray-compact" || name == "ppiray-subdivide")
     {
       vtkNew<vtkUnstructuredGridGPURayCastMapper> m;
+      if (name == "ppiray-subdivide")
+      {
+        m->SetHexahedronModeToSubdivide();
+      }
       m->SetTetrahedronLayout(name == "ppiray-compact"
                                 ? vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_COMPACT
                                 : vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_PLANES);
@@ -522,7 +528,9 @@ int main(int argc, char* argv[])
         : name == "ppiray-full"    ? vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION
                                    : vtkUnstructuredGridGPURayCastMapper::PARTIAL_PRE_INTEGRATION);
       Append(rows, Measure(std::string("PPIRay ") + m->GetIntegrationModeAsString() +
-                             (name == "ppiray-compact" ? " (compact)" : ""),
+                             (name == "ppiray-compact"      ? " (compact)"
+                               : name == "ppiray-subdivide" ? " (subdivided)"
+                                                            : ""),
                      m, grid, o, o.Views));
       if (name == "ppiray-full")
       {

@@ -82,8 +82,9 @@ def compare(grid, size):
     window.Render()
     ms = 1000.0 * (time.perf_counter() - start)
     gpu = window_rgb(window)
-    cells = mapper.GetNumberOfTetrahedra() or mapper.GetNumberOfHexahedra()
-    kind = "hexahedra" if mapper.GetNumberOfHexahedra() else "tetrahedra"
+    cells = mapper.GetNumberOfTetrahedra() or mapper.GetNumberOfNativeCells()
+    kind = ("tetrahedra" if mapper.GetNumberOfTetrahedra() else
+            "hexahedra" if mapper.GetNumberOfHexahedra() == cells else "cells natively")
     peels = mapper.GetNumberOfPeels()
     camera = renderer.GetActiveCamera()
     window.Finalize()  # one X connection at a time, whatever the number of cases

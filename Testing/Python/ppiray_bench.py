@@ -138,6 +138,7 @@ def run_worker(args):
     if method == "ppiray":
         result["gpu_bytes"] = mapper.GetGPUMemorySize()
         result["hexahedra"] = mapper.GetNumberOfHexahedra()
+        result["native"] = mapper.GetNumberOfNativeCells()
         result["tetrahedra"] = mapper.GetNumberOfTetrahedra()
         if settings["mode"] == 2:
             result["table_build_s"] = mapper.GetPreIntegrationTableBuildTime()

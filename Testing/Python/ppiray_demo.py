@@ -313,14 +313,15 @@ def main():
         times.append(time.perf_counter() - start)
     save(window, args.out)
     ms = 1000 * float(np.median(times))
-    tets, hexes = mapper.GetNumberOfTetrahedra(), mapper.GetNumberOfHexahedra()
+    tets, native = mapper.GetNumberOfTetrahedra(), mapper.GetNumberOfNativeCells()
     # VTK_TETRA 10; quadratic, Lagrange and Bezier tetrahedra (24, 71, 78) are
     # rendered through their corners; other cells as the tetrahedra they split into.
     types = set(vtk_to_numpy(grid.GetCellTypesArray()))
     how = ("" if types <= {10} else " (higher-order ones by their corners)"
            if types <= {10, 24, 71, 78} else " (cells split)")
-    rendered = "%d hexahedra natively" % hexes if hexes else "%d tetrahedra%s" % (tets, how)
-    if tets + hexes == 0:
+    kind = "hexahedra" if mapper.GetNumberOfHexahedra() == native else "cells"
+    rendered = "%d %s natively" % (native, kind) if native else "%d tetrahedra%s" % (tets, how)
+    if tets + native == 0:
         print("error     nothing was rendered (see the messages above)", file=sys.stderr)
         return 1
     print("dataset   %s: %d cells (%d 3D), %s, rendered as %s" % (

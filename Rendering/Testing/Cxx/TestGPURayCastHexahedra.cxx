@@ -21,8 +21,10 @@
 //     block with a folded (inverted) layer and a linear field: exact. A
 //     rough field under a Step colour map: each jump crossed in place.
 //  4. Voxels (vtkImageData through vtkAppendFilter) render natively, exactly
-//     like the same cells given as hexahedra; a mixed mesh falls back to
-//     tetrahedra with a warning.
+//     like the same cells given as hexahedra; a tetrahedron among them is
+//     marched with them (TestGPURayCastMixedCells tests mixed meshes); a cell
+//     of another kind (a triangle) makes the mesh fall back to tetrahedra with
+//     a warning.
 
 #include "PPIRayBaseline.h"
 #include "PPIRayImageCompare.h"
@@ -517,7 +519,8 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
       check, 5000);
   }
 
-  // 4. Voxels natively, like hexahedra; a mixed mesh falls back with a warning.
+  // 4. Voxels natively, like hexahedra; a mixed mesh natively; another kind
+  // of cell falls back with a warning.
   {
     const auto block = ppiray_test::BlobVoxelBlock(4);
     vtkUnstructuredGrid* voxels = block.Voxels;
@@ -548,12 +551,26 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     mapper->AddObserver(vtkCommand::WarningEvent, messages);
     mapper->SetInputData(mixed);
     scene.Window->Render();
-    std::cout << "mixed: hexahedra " << mapper->GetNumberOfHexahedra() << ", tetrahedra "
+    std::cout << "mixed: native cells " << mapper->GetNumberOfNativeCells() << ", hexahedra "
+              << mapper->GetNumberOfHexahedra() << ", tetrahedra "
               << mapper->GetNumberOfTetrahedra() << "\n";
-    if (mapper->GetNumberOfHexahedra() != 0 || mapper->GetNumberOfTetrahedra() != 6 * 64 + 1 ||
-        messages->Warnings.find("hexahedra only") == std::string::npos)
+    if (mapper->GetNumberOfNativeCells() != 64 + 1 || mapper->GetNumberOfHexahedra() != 64 ||
+        mapper->GetNumberOfTetrahedra() != 0 || !messages->Warnings.empty())
     {
-      errors += Fail("a mixed mesh did not fall back to tetrahedra with a warning");
+      errors += Fail("a mesh of hexahedra and a tetrahedron is not marched natively");
+    }
+    vtkNew<vtkUnstructuredGrid> withTriangle;
+    withTriangle->DeepCopy(mixed);
+    const vtkIdType triangle[3] = { 0, 1, 5 };
+    withTriangle->InsertNextCell(VTK_TRIANGLE, 3, triangle);
+    mapper->SetInputData(withTriangle);
+    scene.Window->Render();
+    std::cout << "with a triangle: native cells " << mapper->GetNumberOfNativeCells()
+              << ", tetrahedra " << mapper->GetNumberOfTetrahedra() << "\n";
+    if (mapper->GetNumberOfNativeCells() != 0 || mapper->GetNumberOfTetrahedra() != 6 * 64 + 1 ||
+        messages->Warnings.find("1 other cells") == std::string::npos)
+    {
+      errors += Fail("a mesh with a triangle did not fall back to tetrahedra with a warning");
     }
   }
   return errors == 0 ? 0 : 1;

@@ -31,6 +31,7 @@ namespace glsl32
 PPIRAY_GLSL_SCALAR_BUILTINS(float)
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
+#include "cubic_fs.glsl"
 #include "hexahedron_field_fs.glsl"
 }
 #define float double
@@ -39,6 +40,7 @@ namespace glsl64
 PPIRAY_GLSL_SCALAR_BUILTINS(double)
 using vec3 = glm::dvec3;
 using vec4 = glm::dvec4;
+#include "cubic_fs.glsl"
 #include "hexahedron_field_fs.glsl"
 }
 #undef float

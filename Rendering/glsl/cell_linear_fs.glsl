@@ -1,0 +1,323 @@
+// Linear cells without subdivision as a cell kind of the march (march_fs.glsl
+// lists what a kind supplies): hexahedra (Miranda 2011), wedges, pyramids and
+// tetrahedra, one grid of any of them. Cell textures
+// (vtkHexahedralCellTextures), in the mesh's local frame, texels per cell
+// GEOMETRY_TEXELS, NEIGHBOR_TEXELS, FIELD_TEXELS declared by
+// vtkPPIRayHexahedralCellBuffers with the kinds' tables
+// (ppirayLinearCellKinds.h): CELL_FACES[24 kind + 4 f + v], the faces'
+// corners wound outward (-1: none), CELL_FRAME[kind], the frame's edges;
+// MIXED_CELLS (false: hexahedra only), PYRAMID_CELLS:
+//   hexCorners[6 h .. 6 h + 5]   up to 8 corners, 24 floats, right-handed
+//   hexNeighbors[2 h]            the neighbour codes through faces 0..3,
+//                                [2 h + 1]: faces 4, 5, the diagonal mask, kind
+//   hexCoefficients[2 h .. + 1]  c0..c7 of the field in the cell frame
+//                                (hexahedron_field_fs.glsl; a pyramid's corner
+//                                values, pyramid_field_fs.glsl; c0 = -3e38: empty)
+// Each quadrilateral (q0, q1, q2, q3) is two triangles split along q0-q2, or
+// q1-q3 when the face's bit is set: the same split as the neighbour's, so the
+// traversal is watertight on non-planar faces. The exit is the nearest
+// triangle the ray actually crosses; if rounding lets the ray slip between
+// the two (an edge), the nearest face plane it heads out of (the convex-cell
+// rule). A folded entry face can be the exit too (exitCandidate).
+
+//PPIRay::HexahedronField::Impl
+
+//PPIRay::PyramidField::Impl
+
+struct Cell
+{
+  int id;
+  int kind; // ppirayLinearCellKinds.h: 0 hexahedron, 1 wedge, 2 pyramid, 3 tetrahedron
+  vec3 p[8];
+  int mask; // bit f: face f split along its second diagonal
+  vec4 c;   // c0..c3
+  vec4 d;   // c4..c7
+};
+
+// Loop iterations of a cell step spent here: the two searches over 6 faces x
+// 2 triangles, the corners, the cubic's extrema and monotonic pieces, and a
+// pyramid's field (four inversions, one more per isosurface crossed).
+const int CELL_LOOPS = 63 +
+  (PYRAMID_CELLS ? (4 + (ISO_MODE == 0 ? 0 : MAXIMUM_ISO_VALUES)) * (PYRAMID_NEWTON_STEPS + 1) : 0);
+
+Cell loadCell(int h)
+{
+  Cell cell;
+  cell.id = h;
+  vec4 t0 = hexCornersTexel(GEOMETRY_TEXELS * h);
+  vec4 t1 = hexCornersTexel(GEOMETRY_TEXELS * h + 1);
+  vec4 t2 = hexCornersTexel(GEOMETRY_TEXELS * h + 2);
+  vec4 t3 = hexCornersTexel(GEOMETRY_TEXELS * h + 3);
+  vec4 t4 = hexCornersTexel(GEOMETRY_TEXELS * h + 4);
+  vec4 t5 = hexCornersTexel(GEOMETRY_TEXELS * h + 5);
+  cell.p[0] = t0.xyz;
+  cell.p[1] = vec3(t0.w, t1.xy);
+  cell.p[2] = vec3(t1.zw, t2.x);
+  cell.p[3] = t2.yzw;
+  cell.p[4] = t3.xyz;
+  cell.p[5] = vec3(t3.w, t4.xy);
+  cell.p[6] = vec3(t4.zw, t5.x);
+  cell.p[7] = t5.yzw;
+  ivec4 n = hexNeighborsTexel(NEIGHBOR_TEXELS * h + 1);
+  cell.mask = n.z;
+  cell.kind = MIXED_CELLS ? n.w : 0;
+  cell.c = hexCoefficientsTexel(FIELD_TEXELS * h);
+  cell.d = hexCoefficientsTexel(FIELD_TEXELS * h + 1);
+  return cell;
+}
+
+// Triangles of face f of a cell of `kind`: 2 (a quadrilateral), 1, or 0
+// (no such face).
+int faceTriangles(int kind, int f)
+{
+  int base = 24 * kind + 4 * f;
+  return CELL_FACES[base] < 0 ? 0 : (CELL_FACES[base + 3] < 0 ? 1 : 2);
+}
+
+// Corner indices of triangle t (0, 1) of face f of a cell of `kind`.
+ivec3 faceTriangle(int kind, int f, int t, int mask)
+{
+  int base = 24 * kind + 4 * f;
+  bool second = ((mask >> f) & 1) == 1;
+  int q0 = CELL_FACES[base], q1 = CELL_FACES[base + 1];
+  int q2 = CELL_FACES[base + 2], q3 = CELL_FACES[base + 3];
+  if (q3 < 0)
+  {
+    return ivec3(q0, q1, q2);
+  }
+  if (second)
+  {
+    return t == 0 ? ivec3(q1, q2, q3) : ivec3(q1, q3, q0);
+  }
+  return t == 0 ? ivec3(q0, q1, q2) : ivec3(q0, q2, q3);
+}
+
+int neighborCode(int h, int f)
+{
+  ivec4 n = hexNeighborsTexel(NEIGHBOR_TEXELS * h + f / 4);
+  int i = f - 4 * (f / 4);
+  return i == 0 ? n.x : (i == 1 ? n.y : (i == 2 ? n.z : n.w));
+}
+
+// Texel i of the neighbour array (the lists of listed_faces_fs.glsl).
+ivec4 neighborListTexel(int i)
+{
+  return hexNeighborsTexel(i);
+}
+
+// Whether the ray reaches triangle v (corner indices into p) at parameter tf:
+// the crossing point is on the inner side of its three edges (with a
+// relative tolerance, so that an edge hit counts for both triangles).
+bool crossesTriangle(vec3 p[8], ivec3 v, vec3 origin, vec3 direction, float tf)
+{
+  vec3 a = p[v.x], b = p[v.y], c = p[v.z];
+  vec3 normal = cross(b - a, c - a);
+  vec3 x = origin + tf * direction;
+  float tolerance = -1.0e-5 * dot(normal, normal);
+  return dot(cross(b - a, x - a), normal) >= tolerance &&
+    dot(cross(c - b, x - b), normal) >= tolerance && dot(cross(a - c, x - c), normal) >= tolerance;
+}
+
+// Where the ray meets the plane of triangle v (corner indices into p), t_f,
+// and n . r with n = (p_v1 - p_v0) x (p_v2 - p_v0), outward for a
+// right-handed cell: > 0 heading out, < 0 heading in.
+void trianglePlaneCrossing(vec3 p[8], ivec3 v, vec3 origin, vec3 direction, out float along,
+  out float tf)
+{
+  vec3 normal = cross(p[v.y] - p[v.x], p[v.z] - p[v.x]);
+  along = dot(normal, direction);
+  tf = dot(normal, p[v.x] - origin) / along;
+}
+
+// The cell a boundary triangle code (2 (FACES h + f) + triangle) enters,
+// `face`, and where the ray meets that triangle's plane (no earlier than
+// `resume`).
+int boundaryEntry(int code, vec3 origin, vec3 direction, float resume, out int face, out float t)
+{
+  int cell = code / (2 * FACES);
+  face = (code - 2 * FACES * cell) / 2;
+  Cell c = loadCell(cell);
+  ivec3 tri = faceTriangle(c.kind, face, code - 2 * FACES * cell - 2 * face, c.mask);
+  vec3 n = cross(c.p[tri.y] - c.p[tri.x], c.p[tri.z] - c.p[tri.x]);
+  t = max(dot(n, c.p[tri.x] - origin) / min(dot(n, direction), -1.0e-30), resume);
+  return cell;
+}
+
+// Whether a triangle of face f, met at tf, may be where the ray leaves a cell
+// it entered at t through `entryFace`. A triangle of the entry face may, if
+// it is met clearly ahead of t: a non-planar face folded across a grazing ray
+// is crossed twice, and the ray goes back into the cell it came from (seen in
+// UNISIM-II's thin layers). The entry triangle itself, and the other half of
+// a planar face, are met at t: rounding cannot bounce a ray through a face.
+bool exitCandidate(int f, int entryFace, float tf, float t)
+{
+  return f != entryFace || tf > t + 1.0e-5 * abs(t);
+}
+
+// A triangle the ray crosses heading out, at or after t: the nearer of the
+// two of the first face crossed (-1: none), and tHit.
+int nearestCrossedFace(Cell cell, int entryFace, vec3 origin, vec3 direction, float t,
+  out float tHit)
+{
+  tHit = INFINITY;
+  int hitFace = -1;
+  for (int f = 0; f < 6 && hitFace < 0; ++f)
+  {
+    for (int side = 0; side < faceTriangles(cell.kind, f); ++side)
+    {
+      ivec3 v = faceTriangle(cell.kind, f, side, cell.mask);
+      float along, tf;
+      trianglePlaneCrossing(cell.p, v, origin, direction, along, tf);
+      if (along > 0.0 && tf < tHit && tf >= t - 1.0e-6 * abs(t) &&
+        exitCandidate(f, entryFace, tf, t) && crossesTriangle(cell.p, v, origin, direction, tf))
+      {
+        tHit = tf;
+        hitFace = f;
+      }
+    }
+  }
+  return hitFace;
+}
+
+// The face of a hexahedron across the one a walk back came in by, where it
+// has a neighbour (-1: none, or another kind).
+int oppositeFace(int cell, int kind, int entryFace)
+{
+  int across = entryFace >= 0 && kind == 0 ? entryFace ^ 1 : -1;
+  return across >= 0 && neighborCode(cell, across) != -1 ? across : -1;
+}
+
+// The face the ray leaves the cell by, entered at t through `entryFace`
+// (-1 at a start inside it), and where (tExit >= t). Forwards: the nearest
+// face plane the ray heads out of, accepted if the ray crosses that
+// triangle; else (a concave fold of a non-planar face) the nearest triangle
+// actually crossed. Backwards (a fold walked back): the face opposite the one
+// the walk came in by (the next layer of a fold, also where the line entered
+// the cell through the side), else the farthest plane the ray heads into.
+int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, bool backwards,
+  out float tExit)
+{
+  tExit = t;
+  float tPlane = INFINITY, tIn = -INFINITY;
+  int planeFace = -1, planeSide = 0, inFace = -1;
+  for (int f = 0; f < 6; ++f)
+  {
+    for (int side = 0; side < faceTriangles(cell.kind, f); ++side)
+    {
+      ivec3 v = faceTriangle(cell.kind, f, side, cell.mask);
+      float along, tf;
+      trianglePlaneCrossing(cell.p, v, origin, direction, along, tf);
+      if (along > 0.0 && tf < tPlane && exitCandidate(f, entryFace, tf, t))
+      {
+        tPlane = tf;
+        planeFace = f;
+        planeSide = side;
+      }
+      if (backwards && f != entryFace && along < 0.0 && tf > tIn)
+      {
+        tIn = tf;
+        inFace = f;
+      }
+    }
+  }
+  if (backwards)
+  {
+    int across = oppositeFace(cell.id, cell.kind, entryFace);
+    return across >= 0 ? across : inFace;
+  }
+  if (planeFace >= 0 && tPlane >= t - 1.0e-6 * abs(t) &&
+    crossesTriangle(cell.p, faceTriangle(cell.kind, planeFace, planeSide, cell.mask), origin,
+      direction, tPlane))
+  {
+    tExit = max(tPlane, t);
+    return planeFace;
+  }
+  float tHit;
+  int hitFace = nearestCrossedFace(cell, entryFace, origin, direction, t, tHit);
+  tExit = max(hitFace >= 0 ? tHit : tPlane, t);
+  return hitFace >= 0 ? hitFace : planeFace;
+}
+
+bool hasField(Cell cell)
+{
+  return cell.c.x > EMPTY_CELL;
+}
+
+// The frame of the cell (its kind's edges from corner 0: a hexahedron's to
+// corners 1, 3, 4), unless it is singular to float precision.
+bool cellFrame(Cell cell, out mat3 toFrame)
+{
+  ivec3 axes = CELL_FRAME[cell.kind];
+  mat3 frame = mat3(cell.p[axes.x] - cell.p[0], cell.p[axes.y] - cell.p[0], cell.p[axes.z] - cell.p[0]);
+  float det = determinant(frame);
+  float scale = length(frame[0]) * length(frame[1]) * length(frame[2]);
+  toFrame = abs(det) > 1.0e-6 * scale ? inverse(frame) : mat3(0.0);
+  return abs(det) > 1.0e-6 * scale;
+}
+
+// The field on the stretch past `entry` (len long): in the cell frame a
+// polynomial in x expanded at the entry point (trilinear: a cubic; a
+// tetrahedron's: linear), none where the frame is singular; a pyramid's by
+// pyramidStretch.
+bool fieldAlongRay(Cell cell, vec3 entry, vec3 exit, float len, vec3 direction, out Stretch s)
+{
+  s.degree = cell.kind == 3 ? 1 : 3;
+  if (PYRAMID_CELLS && cell.kind == 2)
+  {
+    s.w = pyramidStretch(cell.p, cell.c, cell.d.x, entry, direction, len, s.sEnd);
+    return true;
+  }
+  mat3 toFrame;
+  bool regular = cellFrame(cell, toFrame);
+  s.w = rayCubic(cell.c, cell.d, toFrame * (entry - cell.p[0]), toFrame * direction);
+  s.sEnd = cubicValue(s.w, len);
+  return regular;
+}
+
+// The field's gradient at x in the local frame: through the cell frame,
+// grad f = T^T grad_uvw f; a pyramid's, pyramidGradient.
+vec3 fieldGradient(Cell cell, vec3 x)
+{
+  if (PYRAMID_CELLS && cell.kind == 2)
+  {
+    return pyramidGradient(cell.p, cell.c, cell.d.x, x);
+  }
+  mat3 toFrame;
+  cellFrame(cell, toFrame);
+  return transpose(toFrame) * trilinearGradient(cell.c, cell.d, toFrame * (x - cell.p[0]));
+}
+
+// How far x, on face e of cell h, lies outside that face: outside the
+// cell's other faces' triangle planes (unit normals).
+float outsideFace(int h, int e, vec3 x)
+{
+  Cell cell = loadCell(h);
+  float outside = -INFINITY;
+  for (int f = 0; f < 6; ++f)
+  {
+    for (int side = 0; side < faceTriangles(cell.kind, f) && f != e; ++side)
+    {
+      ivec3 v = faceTriangle(cell.kind, f, side, cell.mask);
+      vec3 n = normalize(cross(cell.p[v.y] - cell.p[v.x], cell.p[v.z] - cell.p[v.x]));
+      outside = max(outside, dot(n, x - cell.p[v.x]));
+    }
+  }
+  return outside;
+}
+
+// Where the ray, at tMin or later, enters cell h through face e (te:
+// the nearer of its two triangles' planes it heads into), and how far that
+// point lies outside the face; INFINITY where it heads in through neither.
+float faceEntry(int h, int e, vec3 origin, vec3 direction, float tMin, out float te)
+{
+  Cell cell = loadCell(h);
+  te = INFINITY;
+  for (int side = 0; side < faceTriangles(cell.kind, e); ++side)
+  {
+    float along, tf;
+    trianglePlaneCrossing(
+      cell.p, faceTriangle(cell.kind, e, side, cell.mask), origin, direction, along, tf);
+    te = along < 0.0 ? min(te, max(tf, tMin)) : te;
+  }
+  return te < INFINITY ? outsideFace(h, e, origin + te * direction) : INFINITY;
+}

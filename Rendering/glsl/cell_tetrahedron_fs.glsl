@@ -1,0 +1,212 @@
+// Tetrahedra as a cell kind of the march (march_fs.glsl lists what a kind
+// supplies), read through one of two layouts (tetrahedron_planes_fs.glsl,
+// tetrahedron_corners_fs.glsl, chosen by vtkPPIRayTetrahedralCellBuffers):
+// facePlane(t, f) = (n_f, d_f), outward unit normal, n_f . x = d_f on face f,
+// or a flat cell's corner f (x_f, FLAT_CELL); the field (g, s0),
+// s(x) = g . x + s0 (s0 = -3e38: render empty), linear along a ray; and
+//   neighborsTexel(NEIGHBOR_TEXELS t)[f] = the neighbour code through face f.
+// The exit face is the nearest face plane the ray is heading out of
+// (Weiler et al. 2003, Sec. 3.2): t_f = (d_f - n_f . o) / (n_f . r), n_f . r > 0.
+// A flat cell (zero volume) is crossed with zero length, out through the face
+// whose triangle best contains the point.
+
+//PPIRay::TetrahedronLayout::Impl
+
+struct Cell
+{
+  vec4 p[4]; // face planes, or a flat cell's corners
+  vec4 g;    // the field (g, s0)
+};
+
+// Loop iterations of a cell step spent here: reading the cell (PLANE_LOOPS
+// + FIELD_LOOPS), the exit search (4, a flat cell's 4 + 4), and 4 to spare.
+const int CELL_LOOPS = 12 + PLANE_LOOPS + FIELD_LOOPS;
+
+Cell loadCell(int t)
+{
+  Cell cell;
+  cellPlanesAndField(t, cell.p, cell.g);
+  return cell;
+}
+
+bool isFlatCell(Cell cell)
+{
+  return FLAT_CELLS && cell.p[0].w > FLAT_CELL;
+}
+
+int neighborCode(int t, int f)
+{
+  return neighborsTexel(NEIGHBOR_TEXELS * t)[f];
+}
+
+// Texel i of the neighbour array (the lists of listed_faces_fs.glsl).
+ivec4 neighborListTexel(int i)
+{
+  return neighborsTexel(i);
+}
+
+// The cell a boundary face code (FACES t + f) enters, `face`, and where the
+// ray meets that face's plane (no earlier than `resume`). A flat cell on the
+// boundary: the plane of its entry triangle.
+int boundaryEntry(int code, vec3 origin, vec3 direction, float resume, out int face, out float t)
+{
+  int cell = code / FACES;
+  face = code - FACES * cell;
+  vec4 plane = facePlane(cell, face);
+  if (plane.w > FLAT_CELL)
+  {
+    vec3 a = facePlane(cell, (face + 1) & 3).xyz;
+    vec3 n =
+      cross(facePlane(cell, (face + 2) & 3).xyz - a, facePlane(cell, (face + 3) & 3).xyz - a);
+    n = dot(n, direction) > 0.0 ? -n : n;
+    plane = vec4(n, dot(n, a));
+  }
+  t = max((plane.w - dot(plane.xyz, origin)) / min(dot(plane.xyz, direction), -1.0e-30), resume);
+  return cell;
+}
+
+// The face of a flat cell (corners c_v, face f = the three other than c_f),
+// other than `entryFace`, whose triangle best contains x: the largest
+// smallest barycentric coordinate of x projected on the face's plane,
+// lambda_a = m . ((b - x) x (c - x)) / |m|^2 with m = (b - a) x (c - a);
+// faces of (relatively) zero area are never taken. -1: none.
+int flatCellExit(vec4 c[4], int entryFace, vec3 x)
+{
+  vec3 m[4];
+  float largest = 0.0;
+  for (int f = 0; f < 4; ++f)
+  {
+    vec3 a = c[(f + 1) & 3].xyz;
+    m[f] = cross(c[(f + 2) & 3].xyz - a, c[(f + 3) & 3].xyz - a);
+    largest = max(largest, dot(m[f], m[f]));
+  }
+  int best = -1;
+  float bestScore = -INFINITY;
+  for (int f = 0; f < 4; ++f)
+  {
+    float area2 = dot(m[f], m[f]);
+    if (f == entryFace || !(area2 > 1.0e-8 * largest))
+    {
+      continue;
+    }
+    vec3 a = c[(f + 1) & 3].xyz - x, b = c[(f + 2) & 3].xyz - x, d = c[(f + 3) & 3].xyz - x;
+    float la = dot(m[f], cross(b, d)) / area2;
+    float lb = dot(m[f], cross(d, a)) / area2;
+    float score = min(min(la, lb), 1.0 - la - lb);
+    if (score > bestScore)
+    {
+      bestScore = score;
+      best = f;
+    }
+  }
+  return best;
+}
+
+// The face the ray leaves the cell by, entered at t through `entryFace`
+// (-1 at a start inside it), and where (tExit >= t; t for a flat cell).
+// Forwards: the nearest plane the ray heads out of. Backwards (the cell's
+// stretch lies behind t, a fold walked back): the face the line enters it
+// by, the farthest plane it heads into. -1: none.
+int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, bool backwards,
+  out float tExit)
+{
+  tExit = t;
+  if (isFlatCell(cell))
+  {
+    return flatCellExit(cell.p, entryFace, origin + t * direction);
+  }
+  float tFace = backwards ? -INFINITY : INFINITY;
+  int exitFace = -1;
+  for (int f = 0; f < 4; ++f)
+  {
+    float along = dot(cell.p[f].xyz, direction);
+    float tf = (cell.p[f].w - dot(cell.p[f].xyz, origin)) / along;
+    bool better = backwards ? (along < 0.0 && tf > tFace) : (along > 0.0 && tf < tFace);
+    if (f != entryFace && better)
+    {
+      tFace = tf;
+      exitFace = f;
+    }
+  }
+  tExit = backwards ? t : max(tFace, t);
+  return exitFace;
+}
+
+bool hasField(Cell cell)
+{
+  return cell.g.w > EMPTY_CELL;
+}
+
+// The field on the stretch from `entry` to `exit` (len apart): linear,
+// evaluated at both ends.
+bool fieldAlongRay(Cell cell, vec3 entry, vec3 exit, float len, vec3 direction, out Stretch s)
+{
+  s.degree = 1;
+  float sFront = dot(cell.g.xyz, entry) + cell.g.w;
+  s.sEnd = dot(cell.g.xyz, exit) + cell.g.w;
+  s.w = vec4(sFront, (s.sEnd - sFront) / len, 0.0, 0.0);
+  return true;
+}
+
+vec3 fieldGradient(Cell cell, vec3 x)
+{
+  return cell.g.xyz;
+}
+
+// How far x lies outside triangle (a, b, c) in its plane: the largest
+// distance past one of its edges, m_i . (v_i - x) with m_i the unit inward
+// normal of edge v_i v_i+1 in the plane (negative inside).
+float outsideTriangle(vec3 a, vec3 b, vec3 c, vec3 x)
+{
+  vec3 v[3] = vec3[3](a, b, c);
+  vec3 n = cross(b - a, c - a);
+  float outside = -INFINITY;
+  for (int i = 0; i < 3; ++i)
+  {
+    vec3 inward = normalize(cross(n, v[(i + 1) % 3] - v[i]));
+    outside = max(outside, dot(inward, v[i] - x));
+  }
+  return outside;
+}
+
+// How far x, on face e of cell t, lies outside that face: outside the
+// cell's three other planes (n_f . x - d_f), or, the cell flat, outside the
+// triangle of the corners other than e (PLANE_LOOPS + 4 iterations).
+float outsideFace(int t, int e, vec3 x)
+{
+  vec4 p[4];
+  cellPlanes(t, p);
+  if (FLAT_CELLS && p[0].w > FLAT_CELL)
+  {
+    return outsideTriangle(p[(e + 1) & 3].xyz, p[(e + 2) & 3].xyz, p[(e + 3) & 3].xyz, x);
+  }
+  float outside = -INFINITY;
+  for (int f = 0; f < 4; ++f)
+  {
+    outside = f == e ? outside : max(outside, dot(p[f].xyz, x) - p[f].w);
+  }
+  return outside;
+}
+
+// Where the ray, at tMin or later, enters cell t through face e (te), and how
+// far that point lies outside the face; INFINITY where the ray does not head
+// in through it or the cell is flat (PLANE_LOOPS + 4 iterations).
+float faceEntry(int t, int e, vec3 origin, vec3 direction, float tMin, out float te)
+{
+  vec4 p[4];
+  cellPlanes(t, p);
+  vec4 pe = p[e];
+  float along = dot(pe.xyz, direction);
+  te = max((pe.w - dot(pe.xyz, origin)) / along, tMin);
+  if ((FLAT_CELLS && pe.w > FLAT_CELL) || !(along < 0.0))
+  {
+    return INFINITY;
+  }
+  vec3 y = origin + te * direction;
+  float outside = -INFINITY;
+  for (int f = 0; f < 4; ++f)
+  {
+    outside = f == e ? outside : max(outside, dot(p[f].xyz, y) - p[f].w);
+  }
+  return outside;
+}

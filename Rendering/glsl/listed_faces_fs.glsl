@@ -1,0 +1,85 @@
+// Listed exit faces: a boundary face whose neighbour code names a list in the
+// neighbour array instead of one cell (vtkPPIRayCellBuffers' SPLIT_FACE,
+// REENTRY_FACE). Resolved by the march outside its step loop, once per
+// crossing, through the cell kind's faceEntry() and outsideFace().
+
+// Width of the pixel at ray parameter t: how far the next pixel's ray is
+// from this one there.
+float pixelFootprint(float t)
+{
+  vec2 ndc = 2.0 * texCoord - 1.0;
+  vec3 o, d, o1, d1;
+  pixelRay(ndc, o, d);
+  pixelRay(ndc + vec2(2.0 / float(textureSize(previousAccumulated, 0).x), 0.0), o1, d1);
+  return length(o1 + t * d1 - o - t * d);
+}
+
+// Out through a boundary face with reflex edges (its partners across its
+// three edges listed at texel `list`, ppirayReflexEdges.h), at ray
+// parameter t: the partner the ray enters within a quarter of a pixel's
+// width further on, if any (t moves to that entry), else -1. Depth peeling
+// finds such an entry by rasterization, which within a fraction of a pixel
+// of the edge may give the pixel to the face the ray left instead; the ray's
+// own arithmetic decides here, as it did for the exit. An entry is crossing
+// a partner's face inwards inside the face (to float rounding). The pixel's
+// width is found only for an entry.
+int reentryAcrossEdge(int list, vec3 origin, vec3 direction, inout float t)
+{
+  ivec4 across = neighborListTexel(list);
+  float tEntry = INFINITY;
+  int entry = -1;
+  for (int i = 0; i < 3; ++i)
+  {
+    int c = max(across[i], 0) / FACES;
+    int e = max(across[i], 0) - FACES * c;
+    float te;
+    float outside = faceEntry(c, e, origin, direction, t, te);
+    if (across[i] >= 0 && te < tEntry && outside <= 1.0e-6 * abs(te))
+    {
+      tEntry = te;
+      entry = across[i];
+    }
+  }
+  loopsLeft -= REENTRY_LOOPS; // and the outer step loop's iteration
+  if (entry < 0 || tEntry - t > 0.25 * pixelFootprint(t))
+  {
+    return -1;
+  }
+  t = tEntry;
+  return entry;
+}
+
+// Out through a boundary face split into pieces (the imaginary faces of a
+// convexified grid on it, listed from texel `list`: n, then their codes): the
+// piece x (the exit point, on the face) lies in, the one it is least outside
+// of (outsideFace), so a point on an edge between pieces goes to one of them.
+// -1: no piece (not reached for a valid list). EXIT_LOOPS: SPLIT_PIECE_LOOPS
+// per piece.
+int splitFacePiece(int list, vec3 x)
+{
+  int n = neighborListTexel(list).x;
+  int piece = -1;
+  float leastOutside = INFINITY;
+  for (int i = 0; i < MAXIMUM_SPLIT_PIECES && i < n; ++i)
+  {
+    int code = neighborListTexel(list + (i + 1) / 4)[(i + 1) & 3];
+    int c = code / FACES;
+    float outside = outsideFace(c, code - FACES * c, x);
+    if (outside < leastOutside)
+    {
+      leastOutside = outside;
+      piece = code;
+    }
+  }
+  loopsLeft -= SPLIT_PIECE_LOOPS * min(n, MAXIMUM_SPLIT_PIECES) + 1; // and the outer step loop's iteration
+  return piece;
+}
+
+// The cell and face a listed exit face `code`, left at t, enters (t moves
+// to a re-entry), or -1.
+int listedFaceEntry(int code, vec3 origin, vec3 direction, inout float t)
+{
+  return REENTRY_EDGES && code >= REENTRY_FACE
+    ? reentryAcrossEdge(code - REENTRY_FACE, origin, direction, t)
+    : splitFacePiece(code - SPLIT_FACE, origin + t * direction);
+}
