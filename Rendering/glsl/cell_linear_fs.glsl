@@ -24,15 +24,18 @@
 
 //PPIRay::PyramidField::Impl
 
+// The cell last loaded (loadCell): a handle, and its data in globals, which
+// the shader compiler keeps in registers (a struct holding an array, copied
+// into every function, it kept in memory: 3x the time per step).
 struct Cell
 {
   int id;
-  int kind; // ppirayLinearCellKinds.h: 0 hexahedron, 1 wedge, 2 pyramid, 3 tetrahedron
-  vec3 p[8];
-  int mask; // bit f: face f split along its second diagonal
-  vec4 c;   // c0..c3
-  vec4 d;   // c4..c7
 };
+int cellKindLoaded; // ppirayLinearCellKinds.h: 0 hexahedron, 1 wedge, 2 pyramid, 3 tetrahedron
+vec3 cellP[8];
+int cellMask; // bit f: face f split along its second diagonal
+vec4 cellC;   // c0..c3
+vec4 cellD;   // c4..c7
 
 // Loop iterations of a cell step spent here: the two searches over 6 faces x
 // 2 triangles, the corners, the cubic's extrema and monotonic pieces, and a
@@ -40,30 +43,41 @@ struct Cell
 const int CELL_LOOPS = 63 +
   (PYRAMID_CELLS ? (4 + (ISO_MODE == 0 ? 0 : MAXIMUM_ISO_VALUES)) * (PYRAMID_NEWTON_STEPS + 1) : 0);
 
-Cell loadCell(int h)
+void loadCellData(int h)
 {
-  Cell cell;
-  cell.id = h;
   vec4 t0 = hexCornersTexel(GEOMETRY_TEXELS * h);
   vec4 t1 = hexCornersTexel(GEOMETRY_TEXELS * h + 1);
   vec4 t2 = hexCornersTexel(GEOMETRY_TEXELS * h + 2);
   vec4 t3 = hexCornersTexel(GEOMETRY_TEXELS * h + 3);
   vec4 t4 = hexCornersTexel(GEOMETRY_TEXELS * h + 4);
   vec4 t5 = hexCornersTexel(GEOMETRY_TEXELS * h + 5);
-  cell.p[0] = t0.xyz;
-  cell.p[1] = vec3(t0.w, t1.xy);
-  cell.p[2] = vec3(t1.zw, t2.x);
-  cell.p[3] = t2.yzw;
-  cell.p[4] = t3.xyz;
-  cell.p[5] = vec3(t3.w, t4.xy);
-  cell.p[6] = vec3(t4.zw, t5.x);
-  cell.p[7] = t5.yzw;
+  cellP[0] = t0.xyz;
+  cellP[1] = vec3(t0.w, t1.xy);
+  cellP[2] = vec3(t1.zw, t2.x);
+  cellP[3] = t2.yzw;
+  cellP[4] = t3.xyz;
+  cellP[5] = vec3(t3.w, t4.xy);
+  cellP[6] = vec3(t4.zw, t5.x);
+  cellP[7] = t5.yzw;
   ivec4 n = hexNeighborsTexel(NEIGHBOR_TEXELS * h + 1);
-  cell.mask = n.z;
-  cell.kind = MIXED_CELLS ? n.w : 0;
-  cell.c = hexCoefficientsTexel(FIELD_TEXELS * h);
-  cell.d = hexCoefficientsTexel(FIELD_TEXELS * h + 1);
+  cellMask = n.z;
+  cellKindLoaded = n.w;
+  cellC = hexCoefficientsTexel(FIELD_TEXELS * h);
+  cellD = hexCoefficientsTexel(FIELD_TEXELS * h + 1);
+}
+
+Cell loadCell(int h)
+{
+  Cell cell;
+  cell.id = h;
+  loadCellData(h);
   return cell;
+}
+// The kind of a cell: read only in a mixed mesh (a constant otherwise, so
+// that the kind's tables fold into the code).
+int cellKind(Cell cell)
+{
+  return MIXED_CELLS ? cellKindLoaded : 0;
 }
 
 // Triangles of face f of a cell of `kind`: 2 (a quadrilateral), 1, or 0
@@ -108,9 +122,9 @@ ivec4 neighborListTexel(int i)
 // Whether the ray reaches triangle v (corner indices into p) at parameter tf:
 // the crossing point is on the inner side of its three edges (with a
 // relative tolerance, so that an edge hit counts for both triangles).
-bool crossesTriangle(vec3 p[8], ivec3 v, vec3 origin, vec3 direction, float tf)
+bool crossesTriangle(ivec3 v, vec3 origin, vec3 direction, float tf)
 {
-  vec3 a = p[v.x], b = p[v.y], c = p[v.z];
+  vec3 a = cellP[v.x], b = cellP[v.y], c = cellP[v.z];
   vec3 normal = cross(b - a, c - a);
   vec3 x = origin + tf * direction;
   float tolerance = -1.0e-5 * dot(normal, normal);
@@ -121,12 +135,11 @@ bool crossesTriangle(vec3 p[8], ivec3 v, vec3 origin, vec3 direction, float tf)
 // Where the ray meets the plane of triangle v (corner indices into p), t_f,
 // and n . r with n = (p_v1 - p_v0) x (p_v2 - p_v0), outward for a
 // right-handed cell: > 0 heading out, < 0 heading in.
-void trianglePlaneCrossing(vec3 p[8], ivec3 v, vec3 origin, vec3 direction, out float along,
-  out float tf)
+void trianglePlaneCrossing(ivec3 v, vec3 origin, vec3 direction, out float along, out float tf)
 {
-  vec3 normal = cross(p[v.y] - p[v.x], p[v.z] - p[v.x]);
+  vec3 normal = cross(cellP[v.y] - cellP[v.x], cellP[v.z] - cellP[v.x]);
   along = dot(normal, direction);
-  tf = dot(normal, p[v.x] - origin) / along;
+  tf = dot(normal, cellP[v.x] - origin) / along;
 }
 
 // The cell a boundary triangle code (2 (FACES h + f) + triangle) enters,
@@ -137,9 +150,9 @@ int boundaryEntry(int code, vec3 origin, vec3 direction, float resume, out int f
   int cell = code / (2 * FACES);
   face = (code - 2 * FACES * cell) / 2;
   Cell c = loadCell(cell);
-  ivec3 tri = faceTriangle(c.kind, face, code - 2 * FACES * cell - 2 * face, c.mask);
-  vec3 n = cross(c.p[tri.y] - c.p[tri.x], c.p[tri.z] - c.p[tri.x]);
-  t = max(dot(n, c.p[tri.x] - origin) / min(dot(n, direction), -1.0e-30), resume);
+  ivec3 tri = faceTriangle(cellKind(c), face, code - 2 * FACES * cell - 2 * face, cellMask);
+  vec3 n = cross(cellP[tri.y] - cellP[tri.x], cellP[tri.z] - cellP[tri.x]);
+  t = max(dot(n, cellP[tri.x] - origin) / min(dot(n, direction), -1.0e-30), resume);
   return cell;
 }
 
@@ -163,13 +176,17 @@ int nearestCrossedFace(Cell cell, int entryFace, vec3 origin, vec3 direction, fl
   int hitFace = -1;
   for (int f = 0; f < 6 && hitFace < 0; ++f)
   {
-    for (int side = 0; side < faceTriangles(cell.kind, f); ++side)
+    for (int side = 0; side < 2; ++side)
     {
-      ivec3 v = faceTriangle(cell.kind, f, side, cell.mask);
+      if (side >= faceTriangles(cellKind(cell), f))
+      {
+        continue;
+      }
+      ivec3 v = faceTriangle(cellKind(cell), f, side, cellMask);
       float along, tf;
-      trianglePlaneCrossing(cell.p, v, origin, direction, along, tf);
+      trianglePlaneCrossing(v, origin, direction, along, tf);
       if (along > 0.0 && tf < tHit && tf >= t - 1.0e-6 * abs(t) &&
-        exitCandidate(f, entryFace, tf, t) && crossesTriangle(cell.p, v, origin, direction, tf))
+        exitCandidate(f, entryFace, tf, t) && crossesTriangle(v, origin, direction, tf))
       {
         tHit = tf;
         hitFace = f;
@@ -202,11 +219,15 @@ int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, boo
   int planeFace = -1, planeSide = 0, inFace = -1;
   for (int f = 0; f < 6; ++f)
   {
-    for (int side = 0; side < faceTriangles(cell.kind, f); ++side)
+    for (int side = 0; side < 2; ++side)
     {
-      ivec3 v = faceTriangle(cell.kind, f, side, cell.mask);
+      if (side >= faceTriangles(cellKind(cell), f))
+      {
+        continue;
+      }
+      ivec3 v = faceTriangle(cellKind(cell), f, side, cellMask);
       float along, tf;
-      trianglePlaneCrossing(cell.p, v, origin, direction, along, tf);
+      trianglePlaneCrossing(v, origin, direction, along, tf);
       if (along > 0.0 && tf < tPlane && exitCandidate(f, entryFace, tf, t))
       {
         tPlane = tf;
@@ -222,11 +243,11 @@ int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, boo
   }
   if (backwards)
   {
-    int across = oppositeFace(cell.id, cell.kind, entryFace);
+    int across = oppositeFace(cell.id, cellKind(cell), entryFace);
     return across >= 0 ? across : inFace;
   }
   if (planeFace >= 0 && tPlane >= t - 1.0e-6 * abs(t) &&
-    crossesTriangle(cell.p, faceTriangle(cell.kind, planeFace, planeSide, cell.mask), origin,
+    crossesTriangle(faceTriangle(cellKind(cell), planeFace, planeSide, cellMask), origin,
       direction, tPlane))
   {
     tExit = max(tPlane, t);
@@ -240,15 +261,15 @@ int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, boo
 
 bool hasField(Cell cell)
 {
-  return cell.c.x > EMPTY_CELL;
+  return cellC.x > EMPTY_CELL;
 }
 
 // The frame of the cell (its kind's edges from corner 0: a hexahedron's to
 // corners 1, 3, 4), unless it is singular to float precision.
 bool cellFrame(Cell cell, out mat3 toFrame)
 {
-  ivec3 axes = CELL_FRAME[cell.kind];
-  mat3 frame = mat3(cell.p[axes.x] - cell.p[0], cell.p[axes.y] - cell.p[0], cell.p[axes.z] - cell.p[0]);
+  ivec3 axes = CELL_FRAME[cellKind(cell)];
+  mat3 frame = mat3(cellP[axes.x] - cellP[0], cellP[axes.y] - cellP[0], cellP[axes.z] - cellP[0]);
   float det = determinant(frame);
   float scale = length(frame[0]) * length(frame[1]) * length(frame[2]);
   toFrame = abs(det) > 1.0e-6 * scale ? inverse(frame) : mat3(0.0);
@@ -261,30 +282,36 @@ bool cellFrame(Cell cell, out mat3 toFrame)
 // pyramidStretch.
 bool fieldAlongRay(Cell cell, vec3 entry, vec3 exit, float len, vec3 direction, out Stretch s)
 {
-  s.degree = cell.kind == 3 ? 1 : 3;
-  if (PYRAMID_CELLS && cell.kind == 2)
+  s.degree = cellKind(cell) == 3 ? 1 : 3;
+  if (PYRAMID_CELLS && cellKind(cell) == 2)
   {
-    s.w = pyramidStretch(cell.p, cell.c, cell.d.x, entry, direction, len, s.sEnd);
+    s.w = pyramidStretch(cellP, cellC, cellD.x, entry, direction, len, s.sEnd);
     return true;
   }
   mat3 toFrame;
   bool regular = cellFrame(cell, toFrame);
-  s.w = rayCubic(cell.c, cell.d, toFrame * (entry - cell.p[0]), toFrame * direction);
+  s.w = rayCubic(cellC, cellD, toFrame * (entry - cellP[0]), toFrame * direction);
   s.sEnd = cubicValue(s.w, len);
   return regular;
+}
+
+// The degree of a stretch's field (a constant where the kind has one).
+int stretchDegree(Stretch s)
+{
+  return MIXED_CELLS ? s.degree : 3;
 }
 
 // The field's gradient at x in the local frame: through the cell frame,
 // grad f = T^T grad_uvw f; a pyramid's, pyramidGradient.
 vec3 fieldGradient(Cell cell, vec3 x)
 {
-  if (PYRAMID_CELLS && cell.kind == 2)
+  if (PYRAMID_CELLS && cellKind(cell) == 2)
   {
-    return pyramidGradient(cell.p, cell.c, cell.d.x, x);
+    return pyramidGradient(cellP, cellC, cellD.x, x);
   }
   mat3 toFrame;
   cellFrame(cell, toFrame);
-  return transpose(toFrame) * trilinearGradient(cell.c, cell.d, toFrame * (x - cell.p[0]));
+  return transpose(toFrame) * trilinearGradient(cellC, cellD, toFrame * (x - cellP[0]));
 }
 
 // How far x, on face e of cell h, lies outside that face: outside the
@@ -295,11 +322,15 @@ float outsideFace(int h, int e, vec3 x)
   float outside = -INFINITY;
   for (int f = 0; f < 6; ++f)
   {
-    for (int side = 0; side < faceTriangles(cell.kind, f) && f != e; ++side)
+    for (int side = 0; side < 2; ++side)
     {
-      ivec3 v = faceTriangle(cell.kind, f, side, cell.mask);
-      vec3 n = normalize(cross(cell.p[v.y] - cell.p[v.x], cell.p[v.z] - cell.p[v.x]));
-      outside = max(outside, dot(n, x - cell.p[v.x]));
+      if (f == e || side >= faceTriangles(cellKind(cell), f))
+      {
+        continue;
+      }
+      ivec3 v = faceTriangle(cellKind(cell), f, side, cellMask);
+      vec3 n = normalize(cross(cellP[v.y] - cellP[v.x], cellP[v.z] - cellP[v.x]));
+      outside = max(outside, dot(n, x - cellP[v.x]));
     }
   }
   return outside;
@@ -312,11 +343,15 @@ float faceEntry(int h, int e, vec3 origin, vec3 direction, float tMin, out float
 {
   Cell cell = loadCell(h);
   te = INFINITY;
-  for (int side = 0; side < faceTriangles(cell.kind, e); ++side)
+  for (int side = 0; side < 2; ++side)
   {
+    if (side >= faceTriangles(cellKind(cell), e))
+    {
+      continue;
+    }
     float along, tf;
     trianglePlaneCrossing(
-      cell.p, faceTriangle(cell.kind, e, side, cell.mask), origin, direction, along, tf);
+      faceTriangle(cellKind(cell), e, side, cellMask), origin, direction, along, tf);
     te = along < 0.0 ? min(te, max(tf, tMin)) : te;
   }
   return te < INFINITY ? outsideFace(h, e, origin + te * direction) : INFINITY;

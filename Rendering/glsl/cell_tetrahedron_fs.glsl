@@ -12,11 +12,14 @@
 
 //PPIRay::TetrahedronLayout::Impl
 
+// The cell last loaded (loadCell): a handle, and its data in globals (a
+// struct holding an array, copied into every function, stays in memory).
 struct Cell
 {
-  vec4 p[4]; // face planes, or a flat cell's corners
-  vec4 g;    // the field (g, s0)
+  int id;
 };
+vec4 cellPlaneData[4]; // face planes, or a flat cell's corners
+vec4 cellFieldData;    // the field (g, s0)
 
 // Loop iterations of a cell step spent here: reading the cell (PLANE_LOOPS
 // + FIELD_LOOPS), the exit search (4, a flat cell's 4 + 4), and 4 to spare.
@@ -25,13 +28,14 @@ const int CELL_LOOPS = 12 + PLANE_LOOPS + FIELD_LOOPS;
 Cell loadCell(int t)
 {
   Cell cell;
-  cellPlanesAndField(t, cell.p, cell.g);
+  cell.id = t;
+  cellPlanesAndField(t, cellPlaneData, cellFieldData);
   return cell;
 }
 
 bool isFlatCell(Cell cell)
 {
-  return FLAT_CELLS && cell.p[0].w > FLAT_CELL;
+  return FLAT_CELLS && cellPlaneData[0].w > FLAT_CELL;
 }
 
 int neighborCode(int t, int f)
@@ -113,14 +117,14 @@ int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, boo
   tExit = t;
   if (isFlatCell(cell))
   {
-    return flatCellExit(cell.p, entryFace, origin + t * direction);
+    return flatCellExit(cellPlaneData, entryFace, origin + t * direction);
   }
   float tFace = backwards ? -INFINITY : INFINITY;
   int exitFace = -1;
   for (int f = 0; f < 4; ++f)
   {
-    float along = dot(cell.p[f].xyz, direction);
-    float tf = (cell.p[f].w - dot(cell.p[f].xyz, origin)) / along;
+    float along = dot(cellPlaneData[f].xyz, direction);
+    float tf = (cellPlaneData[f].w - dot(cellPlaneData[f].xyz, origin)) / along;
     bool better = backwards ? (along < 0.0 && tf > tFace) : (along > 0.0 && tf < tFace);
     if (f != entryFace && better)
     {
@@ -134,7 +138,7 @@ int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, boo
 
 bool hasField(Cell cell)
 {
-  return cell.g.w > EMPTY_CELL;
+  return cellFieldData.w > EMPTY_CELL;
 }
 
 // The field on the stretch from `entry` to `exit` (len apart): linear,
@@ -142,15 +146,21 @@ bool hasField(Cell cell)
 bool fieldAlongRay(Cell cell, vec3 entry, vec3 exit, float len, vec3 direction, out Stretch s)
 {
   s.degree = 1;
-  float sFront = dot(cell.g.xyz, entry) + cell.g.w;
-  s.sEnd = dot(cell.g.xyz, exit) + cell.g.w;
+  float sFront = dot(cellFieldData.xyz, entry) + cellFieldData.w;
+  s.sEnd = dot(cellFieldData.xyz, exit) + cellFieldData.w;
   s.w = vec4(sFront, (s.sEnd - sFront) / len, 0.0, 0.0);
   return true;
 }
 
+// The degree of a stretch's field (a constant where the kind has one).
+int stretchDegree(Stretch s)
+{
+  return 1;
+}
+
 vec3 fieldGradient(Cell cell, vec3 x)
 {
-  return cell.g.xyz;
+  return cellFieldData.xyz;
 }
 
 // How far x lies outside triangle (a, b, c) in its plane: the largest

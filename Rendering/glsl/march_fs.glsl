@@ -172,8 +172,9 @@ void main()
         {
           if (BLEND == 0)
           {
+            stretchCell = c;
             k = integrateStretch(
-              c, s, tEnd - tFrom, origin + tFrom * direction, direction, k, j, color);
+              s, tEnd - tFrom, origin + tFrom * direction, direction, k, j, color);
           }
           else
           {

@@ -13,6 +13,9 @@
 // cells' float evaluations of a point field differ by rounding) is
 // composited once, at the entry.
 
+// The cell of the stretch being integrated (its gradient at isosurfaces).
+Cell stretchCell;
+
 // The monotonic piece [xA, xB] of the stretch, s from sA to sB.
 int integrateMonotonic(Stretch s, float xA, float xB, float sA, float sB, int k,
   inout vec4 color)
@@ -21,7 +24,7 @@ int integrateMonotonic(Stretch s, float xA, float xB, float sA, float sB, int k,
   {
     return k;
   }
-  k = s.degree == 1 ? integrateSegment(sA, sB, xB - xA, k, color)
+  k = stretchDegree(s) == 1 ? integrateSegment(sA, sB, xB - xA, k, color)
                     : integrateMonotonicPiece(s.w, xA, xB, sA, sB, k, color);
   cutAt += outOfLoops ? xA : 0.0;
   return k;
@@ -31,7 +34,7 @@ int integrateMonotonic(Stretch s, float xA, float xB, float sA, float sB, int k,
 // in closed form for a linear piece, else by cubicCrossing.
 float stretchCrossing(Stretch s, float v, float xA, float x0, float x1, float s0, float s1)
 {
-  if (s.degree == 1)
+  if (stretchDegree(s) == 1)
   {
     float ds = s1 - s0;
     return ds == 0.0 ? xA : clamp(x0 + (x1 - x0) * (v - s0) / ds, xA, x1);
@@ -39,11 +42,11 @@ float stretchCrossing(Stretch s, float v, float xA, float x0, float x1, float s0
   return cubicCrossing(s.w, v, xA, x1);
 }
 
-int integrateStretch(Cell cell, Stretch s, float len, vec3 entry, vec3 direction, int k,
+int integrateStretch(Stretch s, float len, vec3 entry, vec3 direction, int k,
   inout int j, inout vec4 color)
 {
   float roots[2];
-  int extrema = s.degree == 1 ? 0 : cubicExtrema(s.w, len, roots);
+  int extrema = stretchDegree(s) == 1 ? 0 : cubicExtrema(s.w, len, roots);
   float x0 = 0.0;
   float s0 = s.w.x;
   if (ISO_MODE != 0)
@@ -75,7 +78,7 @@ int integrateStretch(Cell cell, Stretch s, float len, vec3 entry, vec3 direction
         }
       }
       vec3 y = entry + xv * direction;
-      compositeIsoSurface(surface, y, fieldGradient(cell, y), direction, color);
+      compositeIsoSurface(surface, y, fieldGradient(stretchCell, y), direction, color);
       xA = xv;
       sA = v;
       j = next;
@@ -97,7 +100,7 @@ int integrateStretch(Cell cell, Stretch s, float len, vec3 entry, vec3 direction
 // A projection (BLEND 1 to 4) along the stretch; out of loops, cutAt as above.
 void projectStretch(Stretch s, float len, inout int k, inout vec3 state)
 {
-  if (s.degree == 1)
+  if (stretchDegree(s) == 1)
   {
     projectLinearStretch(s.w.x, s.sEnd, len, k, state);
   }
