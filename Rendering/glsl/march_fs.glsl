@@ -172,9 +172,7 @@ void main()
         {
           if (BLEND == 0)
           {
-            stretchCell = c;
-            k = integrateStretch(
-              s, tEnd - tFrom, origin + tFrom * direction, direction, k, j, color);
+            k = integrateStretch(c, s, tEnd - tFrom, origin + tFrom * direction, direction, k, j, color);
           }
           else
           {

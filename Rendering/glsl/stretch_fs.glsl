@@ -13,9 +13,6 @@
 // cells' float evaluations of a point field differ by rounding) is
 // composited once, at the entry.
 
-// The cell of the stretch being integrated (its gradient at isosurfaces).
-Cell stretchCell;
-
 // The monotonic piece [xA, xB] of the stretch, s from sA to sB.
 int integrateMonotonic(Stretch s, float xA, float xB, float sA, float sB, int k,
   inout vec4 color)
@@ -42,9 +39,13 @@ float stretchCrossing(Stretch s, float v, float xA, float x0, float x1, float s0
   return cubicCrossing(s.w, v, xA, x1);
 }
 
-int integrateStretch(Stretch s, float len, vec3 entry, vec3 direction, int k,
+int integrateStretch(Cell cell, Stretch s, float len, vec3 entry, vec3 direction, int k,
   inout int j, inout vec4 color)
 {
+  if (ISO_MODE == 0 && stretchDegree(s) == 1)
+  {
+    return integrateMonotonic(s, 0.0, len, s.w.x, s.sEnd, k, color);
+  }
   float roots[2];
   int extrema = stretchDegree(s) == 1 ? 0 : cubicExtrema(s.w, len, roots);
   float x0 = 0.0;
@@ -78,7 +79,7 @@ int integrateStretch(Stretch s, float len, vec3 entry, vec3 direction, int k,
         }
       }
       vec3 y = entry + xv * direction;
-      compositeIsoSurface(surface, y, fieldGradient(stretchCell, y), direction, color);
+      compositeIsoSurface(surface, y, fieldGradient(cell, y), direction, color);
       xA = xv;
       sA = v;
       j = next;
