@@ -1,5 +1,7 @@
 #include "ppirayConformingTetrahedra.h"
 
+#include "ppirayLinearCellKinds.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellType.h"
@@ -14,16 +16,18 @@
 
 namespace
 {
-// Faces of the linear cells in VTK's point order (orientation does not matter:
-// the consumers orient each tetrahedron by the sign of its volume). -1 ends a
-// triangle.
+// The faces of the linear cells: ppirayLinearCellKinds.h (their orientation
+// does not matter here: the consumers orient each tetrahedron by the sign of
+// its volume). A face is 4 corner indices, -1 ending a triangle.
 using Face = std::array<int, 4>;
-const Face HexahedronFaces[] = { { 0, 4, 7, 3 }, { 1, 2, 6, 5 }, { 0, 1, 5, 4 }, { 3, 7, 6, 2 },
-  { 0, 3, 2, 1 }, { 4, 5, 6, 7 } };
-const Face WedgeFaces[] = { { 0, 1, 2, -1 }, { 3, 5, 4, -1 }, { 0, 3, 4, 1 }, { 1, 4, 5, 2 },
-  { 2, 5, 3, 0 } };
-const Face PyramidFaces[] = { { 0, 3, 2, 1 }, { 0, 1, 4, -1 }, { 1, 2, 4, -1 }, { 2, 3, 4, -1 },
-  { 3, 0, 4, -1 } };
+const ppiray::LinearCellKindInfo& HexahedronKind =
+  ppiray::LinearCellKindOf(ppiray::HEXAHEDRON_KIND);
+
+Face FaceOf(const ppiray::LinearCellKindInfo& kind, int f)
+{
+  const int* q = kind.Face[f];
+  return { q[0], q[1], q[2], q[3] };
+}
 }
 
 namespace ppiray
@@ -68,17 +72,18 @@ LinearShape LinearShapeOf(int type)
 namespace
 {
 
-// Tetrahedra (apex, triangle) over the triangles of `faces` that miss the
-// apex's point (a cone from it); quadrilaterals split by `diagonals`. For a
-// cell without repeated points these are the triangles of the faces that do
-// not contain the apex: the diagonal of the others goes through it.
-template<size_t N>
-void AppendCone(const Face (&faces)[N], const vtkIdType* pts, int apex,
+// Tetrahedra (apex, triangle) over the triangles of the faces of a cell of
+// `kind` that miss the apex's point (a cone from it); quadrilaterals split by
+// `diagonals`. For a cell without repeated points these are the triangles of
+// the faces that do not contain the apex: the diagonal of the others goes
+// through it.
+void AppendCone(const ppiray::LinearCellKindInfo& kind, const vtkIdType* pts, int apex,
   const ppiray::QuadDiagonals& diagonals, std::vector<vtkIdType>& tets)
 {
   const vtkIdType v = pts[apex];
-  for (const Face& face : faces)
+  for (int f = 0; f < kind.Faces; ++f)
   {
+    const Face face = FaceOf(kind, f);
     const vtkIdType q[4] = { pts[face[0]], pts[face[1]], pts[face[2]],
       face[3] < 0 ? -1 : pts[face[3]] };
     const bool quadrilateral = face[3] >= 0;
@@ -101,7 +106,7 @@ void AppendCone(const Face (&faces)[N], const vtkIdType* pts, int apex,
 // face of the cell.
 bool FoldsOntoAnotherFace(const vtkIdType c[8], int f, bool second)
 {
-  const Face& face = HexahedronFaces[f];
+  const Face face = FaceOf(HexahedronKind, f);
   for (int t = 0; t < 2; ++t)
   {
     vtkIdType triangle[3];
@@ -111,7 +116,7 @@ bool FoldsOntoAnotherFace(const vtkIdType c[8], int f, bool second)
     }
     for (int g = 0; g < 6; ++g)
     {
-      const Face& other = HexahedronFaces[g];
+      const Face other = FaceOf(HexahedronKind, g);
       const vtkIdType ids[4] = { c[other[0]], c[other[1]], c[other[2]], c[other[3]] };
       auto onOther = [&](vtkIdType id) { return std::find(ids, ids + 4, id) != ids + 4; };
       if (g != f && onOther(triangle[0]) && onOther(triangle[1]) && onOther(triangle[2]))
@@ -170,14 +175,15 @@ bool OneSign(vtkUnstructuredGrid* grid, const vtkIdType* tets, size_t n)
 // every tetrahedron by its sign, would count that volume twice. Then the
 // first corner (by id) whose cone has one sign replaces the cone from
 // tets[first] on; if none has, the cone from the smallest point stays.
-template<size_t N>
-void ConeFromStarPoint(vtkUnstructuredGrid* grid, const Face (&faces)[N], const vtkIdType* c,
-  int corners, const ppiray::QuadDiagonals& diagonals, size_t first, std::vector<vtkIdType>& tets)
+void ConeFromStarPoint(vtkUnstructuredGrid* grid, const ppiray::LinearCellKindInfo& kind,
+  const vtkIdType* c, const ppiray::QuadDiagonals& diagonals, size_t first,
+  std::vector<vtkIdType>& tets)
 {
   if (OneSign(grid, tets.data() + first, (tets.size() - first) / 4))
   {
     return;
   }
+  const int corners = kind.Corners;
   int order[8];
   std::iota(order, order + corners, 0);
   std::sort(order, order + corners, [&](int a, int b) { return c[a] < c[b]; });
@@ -189,7 +195,7 @@ void ConeFromStarPoint(vtkUnstructuredGrid* grid, const Face (&faces)[N], const 
       continue; // the same point
     }
     cone.clear();
-    AppendCone(faces, c, order[i], diagonals, cone);
+    AppendCone(kind, c, order[i], diagonals, cone);
     if (OneSign(grid, cone.data(), cone.size() / 4))
     {
       tets.resize(first);
@@ -241,7 +247,7 @@ void QuadDiagonals::AddHexahedron(const vtkIdType c[8])
   }
   for (int f = 0; f < 6; ++f)
   {
-    const Face& q = HexahedronFaces[f];
+    const Face q = FaceOf(HexahedronKind, f);
     const auto ids = SortedIds(c[q[0]], c[q[1]], c[q[2]], c[q[3]]);
     const bool second = !SplitsAlongFirstDiagonal(c[q[0]], c[q[1]], c[q[2]], c[q[3]]);
     if (std::adjacent_find(ids.begin(), ids.end()) == ids.end() &&
@@ -343,23 +349,15 @@ void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, Tetrahe
         corners[i] = pts[HexahedronCorner(type, i)];
       }
       const int apex = SmallestPoint(corners, shape.Corners);
-      switch (shape.Type)
+      if (shape.Type == VTK_TETRA)
       {
-        case VTK_TETRA:
-          split.Tets.insert(split.Tets.end(), corners, corners + 4);
-          break;
-        case VTK_HEXAHEDRON:
-          AppendCone(HexahedronFaces, corners, apex, diagonals, split.Tets);
-          ConeFromStarPoint(grid, HexahedronFaces, corners, 8, diagonals, before, split.Tets);
-          break;
-        case VTK_WEDGE:
-          AppendCone(WedgeFaces, corners, apex, diagonals, split.Tets);
-          ConeFromStarPoint(grid, WedgeFaces, corners, 6, diagonals, before, split.Tets);
-          break;
-        default:
-          AppendCone(PyramidFaces, corners, apex, diagonals, split.Tets);
-          ConeFromStarPoint(grid, PyramidFaces, corners, 5, diagonals, before, split.Tets);
-          break;
+        split.Tets.insert(split.Tets.end(), corners, corners + 4);
+      }
+      else
+      {
+        const auto& kind = LinearCellKindOf(LinearCellKindOfType(shape.Type));
+        AppendCone(kind, corners, apex, diagonals, split.Tets);
+        ConeFromStarPoint(grid, kind, corners, diagonals, before, split.Tets);
       }
       split.CellIds.insert(split.CellIds.end(), (split.Tets.size() - before) / 4, cellId);
       split.NumberOfSplitCells += shape.Type != VTK_TETRA ? 1 : 0;

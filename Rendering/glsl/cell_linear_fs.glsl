@@ -142,6 +142,21 @@ void trianglePlaneCrossing(ivec3 v, vec3 origin, vec3 direction, out float along
   tf = dot(normal, cellP[v.x] - origin) / along;
 }
 
+// Where the ray meets the plane of triangle `side` of face f of the loaded
+// cell (trianglePlaneCrossing), and its corners v; false where the cell's
+// kind has no such triangle.
+bool faceTriangleCrossing(Cell cell, int f, int side, vec3 origin, vec3 direction, out ivec3 v,
+  out float along, out float tf)
+{
+  if (side >= faceTriangles(cellKind(cell), f))
+  {
+    return false;
+  }
+  v = faceTriangle(cellKind(cell), f, side, cellMask);
+  trianglePlaneCrossing(v, origin, direction, along, tf);
+  return true;
+}
+
 // The cell a boundary triangle code (2 (FACES h + f) + triangle) enters,
 // `face`, and where the ray meets that triangle's plane (no earlier than
 // `resume`).
@@ -178,13 +193,12 @@ int nearestCrossedFace(Cell cell, int entryFace, vec3 origin, vec3 direction, fl
   {
     for (int side = 0; side < 2; ++side)
     {
-      if (side >= faceTriangles(cellKind(cell), f))
+      ivec3 v;
+      float along, tf;
+      if (!faceTriangleCrossing(cell, f, side, origin, direction, v, along, tf))
       {
         continue;
       }
-      ivec3 v = faceTriangle(cellKind(cell), f, side, cellMask);
-      float along, tf;
-      trianglePlaneCrossing(v, origin, direction, along, tf);
       if (along > 0.0 && tf < tHit && tf >= t - 1.0e-6 * abs(t) &&
         exitCandidate(f, entryFace, tf, t) && crossesTriangle(v, origin, direction, tf))
       {
@@ -221,13 +235,12 @@ int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, boo
   {
     for (int side = 0; side < 2; ++side)
     {
-      if (side >= faceTriangles(cellKind(cell), f))
+      ivec3 v;
+      float along, tf;
+      if (!faceTriangleCrossing(cell, f, side, origin, direction, v, along, tf))
       {
         continue;
       }
-      ivec3 v = faceTriangle(cellKind(cell), f, side, cellMask);
-      float along, tf;
-      trianglePlaneCrossing(v, origin, direction, along, tf);
       if (along > 0.0 && tf < tPlane && exitCandidate(f, entryFace, tf, t))
       {
         tPlane = tf;
@@ -345,14 +358,12 @@ float faceEntry(int h, int e, vec3 origin, vec3 direction, float tMin, out float
   te = INFINITY;
   for (int side = 0; side < 2; ++side)
   {
-    if (side >= faceTriangles(cellKind(cell), e))
-    {
-      continue;
-    }
+    ivec3 v;
     float along, tf;
-    trianglePlaneCrossing(
-      faceTriangle(cellKind(cell), e, side, cellMask), origin, direction, along, tf);
-    te = along < 0.0 ? min(te, max(tf, tMin)) : te;
+    if (faceTriangleCrossing(cell, e, side, origin, direction, v, along, tf) && along < 0.0)
+    {
+      te = min(te, max(tf, tMin));
+    }
   }
   return te < INFINITY ? outsideFace(h, e, origin + te * direction) : INFINITY;
 }

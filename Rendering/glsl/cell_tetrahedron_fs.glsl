@@ -179,6 +179,17 @@ float outsideTriangle(vec3 a, vec3 b, vec3 c, vec3 x)
   return outside;
 }
 
+// How far x lies outside the planes p other than e: max_f (n_f . x - d_f).
+float outsidePlanesBut(vec4 p[4], int e, vec3 x)
+{
+  float outside = -INFINITY;
+  for (int f = 0; f < 4; ++f)
+  {
+    outside = f == e ? outside : max(outside, dot(p[f].xyz, x) - p[f].w);
+  }
+  return outside;
+}
+
 // How far x, on face e of cell t, lies outside that face: outside the
 // cell's three other planes (n_f . x - d_f), or, the cell flat, outside the
 // triangle of the corners other than e (PLANE_LOOPS + 4 iterations).
@@ -190,12 +201,7 @@ float outsideFace(int t, int e, vec3 x)
   {
     return outsideTriangle(p[(e + 1) & 3].xyz, p[(e + 2) & 3].xyz, p[(e + 3) & 3].xyz, x);
   }
-  float outside = -INFINITY;
-  for (int f = 0; f < 4; ++f)
-  {
-    outside = f == e ? outside : max(outside, dot(p[f].xyz, x) - p[f].w);
-  }
-  return outside;
+  return outsidePlanesBut(p, e, x);
 }
 
 // Where the ray, at tMin or later, enters cell t through face e (te), and how
@@ -213,10 +219,5 @@ float faceEntry(int t, int e, vec3 origin, vec3 direction, float tMin, out float
     return INFINITY;
   }
   vec3 y = origin + te * direction;
-  float outside = -INFINITY;
-  for (int f = 0; f < 4; ++f)
-  {
-    outside = f == e ? outside : max(outside, dot(p[f].xyz, y) - p[f].w);
-  }
-  return outside;
+  return outsidePlanesBut(p, e, y);
 }
