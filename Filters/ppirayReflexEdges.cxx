@@ -4,8 +4,10 @@
 #include <glm/vec3.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <utility>
 
 namespace
@@ -116,5 +118,43 @@ std::vector<int> ReflexEdgePartners(
     i = j;
   }
   return partners;
+}
+
+//------------------------------------------------------------------------------
+int ListReentryFaces(const std::vector<float>& points, const std::vector<unsigned int>& triangles,
+  const std::vector<int>& faceOf, const std::function<size_t(int face)>& slotOf, int reentryFace,
+  std::vector<int>& neighbors)
+{
+  const std::vector<int> partners = ReflexEdgePartners(points, triangles);
+  // Each face's partners over its triangles' edges, in the order met.
+  std::map<int, std::array<int, 4>> across;
+  for (size_t k = 0; k < faceOf.size(); ++k)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      const int partner = partners[3 * k + e];
+      if (partner < 0 || faceOf[partner] == faceOf[k])
+      {
+        continue;
+      }
+      auto inserted = across.emplace(faceOf[k], std::array<int, 4>{ -1, -1, -1, -1 });
+      std::array<int, 4>& list = inserted.first->second;
+      const int other = faceOf[partner];
+      for (int& entry : list)
+      {
+        if (entry == other || entry < 0)
+        {
+          entry = other;
+          break;
+        }
+      }
+    }
+  }
+  for (const auto& face : across)
+  {
+    neighbors[slotOf(face.first)] = reentryFace + static_cast<int>(neighbors.size() / 4);
+    neighbors.insert(neighbors.end(), face.second.begin(), face.second.end());
+  }
+  return static_cast<int>(across.size());
 }
 }

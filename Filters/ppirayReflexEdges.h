@@ -15,6 +15,7 @@
 
 #include "ppirayFiltersModule.h" // for export macro
 
+#include <functional>
 #include <vector>
 
 namespace ppiray
@@ -30,6 +31,20 @@ namespace ppiray
  */
 PPIRAYFILTERS_EXPORT std::vector<int> ReflexEdgePartners(
   const std::vector<float>& points, const std::vector<unsigned int>& triangles);
+
+/**
+ * The re-entry lists of a cell layout, for any cell kind: the boundary
+ * surface (`points`, `triangles` as above) whose triangle k lies on the
+ * boundary face `faceOf[k]` (a face code, FACES c + f; a quadrilateral is
+ * two triangles), and the layout's neighbour array `neighbors` (texels of
+ * 4 ints). Each boundary face with a reflex edge gets the neighbour code
+ * `reentryFace` + i, `neighbors[slotOf(face)]`, where texel i, appended,
+ * holds the faces across its edges (at most 4; -1 for none left). The faces
+ * of one face's own triangles are not partners. Returns the faces listed.
+ */
+PPIRAYFILTERS_EXPORT int ListReentryFaces(const std::vector<float>& points,
+  const std::vector<unsigned int>& triangles, const std::vector<int>& faceOf,
+  const std::function<size_t(int face)>& slotOf, int reentryFace, std::vector<int>& neighbors);
 }
 
 #endif

@@ -5,6 +5,7 @@
 #include "ppirayInvertedSheets.h"
 #include "ppirayLinearCellKinds.h"
 #include "ppirayMeshLocalFrame.h"
+#include "ppirayReflexEdges.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellType.h"
@@ -274,6 +275,15 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     this->MarkTurnBacks();
   }
   this->ExtractBoundary(boundary, grid->GetNumberOfPoints());
+  // Faces with reflex edges: the faces across them, for the march to enter
+  // again where it leaves next to one (boundary triangle codes 12 h + 2 f + t).
+  std::vector<int> faceOf(this->BoundaryFaces.size());
+  std::transform(this->BoundaryFaces.begin(), this->BoundaryFaces.end(), faceOf.begin(),
+    [](int triangle) { return triangle / 2; });
+  this->NumberOfReentryFaces = ppiray::ListReentryFaces(
+    this->BoundaryPoints, this->BoundaryTriangles, faceOf,
+    [](int face) { return static_cast<size_t>(8 * (face / 6) + face % 6); }, ReentryFace(),
+    this->Neighbors);
   this->Modified();
   return true;
 }
@@ -296,6 +306,7 @@ void vtkHexahedralCellTextures::Clear()
   this->NumberOfUnfoldedFaces = 0;
   this->NumberOfFoldedFaces = 0;
   this->NumberOfSplitQuadrilaterals = 0;
+  this->NumberOfReentryFaces = 0;
   this->NumberOfSingularFrames = 0;
   this->NumberOfFlatHexahedra = 0;
   this->NumberOfOtherCells = 0;
@@ -715,6 +726,7 @@ void vtkHexahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfUnfoldedFaces: " << this->NumberOfUnfoldedFaces << "\n";
   os << indent << "NumberOfFoldedFaces: " << this->NumberOfFoldedFaces << "\n";
   os << indent << "NumberOfSplitQuadrilaterals: " << this->NumberOfSplitQuadrilaterals << "\n";
+  os << indent << "NumberOfReentryFaces: " << this->NumberOfReentryFaces << "\n";
   os << indent << "NumberOfNaNScalars: " << this->NumberOfNaNScalars << "\n";
   os << indent << "NumberOfSingularFrames: " << this->NumberOfSingularFrames << "\n";
   os << indent << "NumberOfFlatHexahedra: " << this->NumberOfFlatHexahedra << "\n";

@@ -80,6 +80,12 @@ public:
    * cells, its list at neighbour texel i: 2, then their codes.
    */
   static constexpr int SplitFace() { return 1 << 30; }
+  /**
+   * ReentryFace() + i: a boundary face with a reflex edge
+   * (ppirayReflexEdges.h), texel i holding the codes of the boundary faces
+   * across its edges (-1: none left).
+   */
+  static constexpr int ReentryFace() { return (1 << 30) + (1 << 29); }
   static int NeighborCode(vtkIdType hexahedron, int face, bool folded, bool turnBack)
   {
     const int code = static_cast<int>(6 * hexahedron + face);
@@ -126,6 +132,8 @@ public:
   vtkGetMacro(NumberOfFoldedFaces, vtkIdType);
   /** Quadrilaterals met by two triangles of other cells (SplitFace()). */
   vtkGetMacro(NumberOfSplitQuadrilaterals, vtkIdType);
+  /** Boundary faces with a reflex edge (ReentryFace()). */
+  vtkGetMacro(NumberOfReentryFaces, vtkIdType);
   vtkGetMacro(NumberOfNaNScalars, vtkIdType);
   /**
    * Hexahedra whose frame is singular, |det M| <= 1e-6 |a| |b| |c|, at every
@@ -196,6 +204,7 @@ protected:
   vtkIdType NumberOfUnfoldedFaces = 0;
   vtkIdType NumberOfFoldedFaces = 0;
   vtkIdType NumberOfSplitQuadrilaterals = 0;
+  vtkIdType NumberOfReentryFaces = 0;
   vtkIdType NumberOfNaNScalars = 0;
   vtkIdType NumberOfSingularFrames = 0;
   vtkIdType NumberOfFlatHexahedra = 0;

@@ -239,25 +239,9 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
 
   // Faces with reflex edges: the faces across them, for the march to enter
   // again where it leaves next to one.
-  const std::vector<int> partners =
-    ppiray::ReflexEdgePartners(this->BoundaryPoints, this->BoundaryTriangles);
-  this->NumberOfReentryFaces = 0;
-  for (size_t k = 0; k < this->BoundaryFaces.size(); ++k)
-  {
-    const int* across = partners.data() + 3 * k;
-    if (across[0] < 0 && across[1] < 0 && across[2] < 0)
-    {
-      continue;
-    }
-    this->Neighbors[this->BoundaryFaces[k]] =
-      ReentryFace() + static_cast<int>(this->Neighbors.size() / 4);
-    for (int e = 0; e < 3; ++e)
-    {
-      this->Neighbors.push_back(across[e] < 0 ? NoNeighbor() : this->BoundaryFaces[across[e]]);
-    }
-    this->Neighbors.push_back(NoNeighbor());
-    ++this->NumberOfReentryFaces;
-  }
+  this->NumberOfReentryFaces = ppiray::ListReentryFaces(
+    this->BoundaryPoints, this->BoundaryTriangles, this->BoundaryFaces,
+    [](int face) { return static_cast<size_t>(face); }, ReentryFace(), this->Neighbors);
   this->Modified();
   return true;
 }

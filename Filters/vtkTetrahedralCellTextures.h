@@ -101,7 +101,7 @@ public:
    * n imaginary faces on it, in texels of 4 (at most MaximumPieces());
    * ReentryFace() + i for a boundary face with a reflex edge
    * (ppirayReflexEdges.h), texel i holding the codes of the boundary faces
-   * across its three edges (-1: not reflex) and -1.
+   * across its edges (-1: none left).
    */
   static constexpr int NoNeighbor() { return -1; }
   static constexpr int TurnBack() { return 1 << 29; }

@@ -50,12 +50,12 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
   // with reflex edges; the search at one is taken from the loop budget after
   // the fact (EXIT_LOOPS, march_common_fs.glsl).
   // A piece is one iteration of the search's loop, with one cell's planes
-  // and a loop over its four faces; a reflex edge's search is three of those,
-  // and the step loop's iteration that reached the face.
+  // and a loop over its four faces; a reflex edge's search is one of those
+  // per edge of the face, and the step loop's iteration that reached it.
   const Features features = this->GetFeatures();
   const int pieces = features.MaximumSplitPieces;
   const int pieceLoops = 1 + layout.PlaneLoops + 4;
-  const int reentryLoops = 1 + 3 * pieceLoops;
+  const int reentryLoops = 1 + layout.FaceEdges * pieceLoops;
   glsl << "const int PLANE_LOOPS = " << layout.PlaneLoops << ";\n"
        << "const int FIELD_LOOPS = " << layout.FieldLoops << ";\n"
        << "const int SPLIT_PIECE_LOOPS = " << pieceLoops << ";\n"
@@ -64,6 +64,7 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
        << "const bool SPLIT_FACES = " << (pieces > 0 ? "true" : "false") << ";\n"
        << "const int MAXIMUM_SPLIT_PIECES = " << pieces << ";\n"
        << "const int REENTRY_FACE = " << layout.ReentryFace << ";\n"
+       << "const int FACE_EDGES = " << layout.FaceEdges << ";\n"
        << "const bool REENTRY_EDGES = " << (features.ReentryEdges ? "true" : "false") << ";\n"
        << "const int EXIT_LOOPS = "
        << std::max(pieceLoops * pieces + 1, features.ReentryEdges ? reentryLoops : 0) << ";\n";

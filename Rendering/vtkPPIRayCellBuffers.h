@@ -58,6 +58,7 @@ public:
     int ReentryFace = 0;   // ... and from here on a reflex-edge face's partners (0: none)
     int PlaneLoops = 4;    // loop iterations reading a cell's planes (PLANE_LOOPS) ...
     int FieldLoops = 0;    // ... and its field after them (FIELD_LOOPS)
+    int FaceEdges = 3;     // most edges of a face: partners in a re-entry list (FACE_EDGES)
   };
   virtual Layout GetLayout() const = 0;
 

@@ -20,12 +20,12 @@
 //------------------------------------------------------------------------------
 vtkPPIRayCellBuffers::Layout vtkPPIRayHexahedralCellBuffers::GetLayout() const
 {
-  // No re-entry lists (a code past SplitFace() is a split quadrilateral's
-  // list); a face's "planes": its cell and the 6 x 2 triangles outsideFace() visits.
+  // A face's "planes": its cell and the 6 x 2 triangles outsideFace() visits;
+  // a quadrilateral has four edges across which to re-enter.
   using Cells = vtkHexahedralCellTextures;
   return { Cells::CornerTexels(), Cells::NeighborTexels(), Cells::CoefficientTexels(), 6,
-    Cells::TurnBack(), 0.0f, Cells::TransparentCellOffset(), Cells::SplitFace(), VTK_INT_MAX, 13,
-    0 };
+    Cells::TurnBack(), 0.0f, Cells::TransparentCellOffset(), Cells::SplitFace(),
+    Cells::ReentryFace(), 13, 0, 4 };
 }
 
 //------------------------------------------------------------------------------
@@ -57,6 +57,7 @@ vtkPPIRayCellBuffers::Features vtkPPIRayHexahedralCellBuffers::GetFeatures() con
   Features features;
   features.Folds = this->Cells->GetNumberOfFoldedFaces() > 0;
   features.MaximumSplitPieces = this->Cells->GetNumberOfSplitQuadrilaterals() > 0 ? 2 : 0;
+  features.ReentryEdges = this->Cells->GetNumberOfReentryFaces() > 0;
   return features;
 }
 

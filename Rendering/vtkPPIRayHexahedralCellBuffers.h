@@ -1,14 +1,14 @@
 /**
  * @class   vtkPPIRayHexahedralCellBuffers
- * @brief   hexahedra on the GPU without subdivision: corners, neighbour codes, trilinear field
+ * @brief   linear cells on the GPU without subdivision: corners, neighbour codes, field per kind
  *
- * vtkHexahedralCellTextures (a mesh of hexahedra and voxels only) behind
- * vtkPPIRayCellBuffers, marched by glsl/march_fs.glsl as the cell kind
- * glsl/cell_hexahedron_fs.glsl: the field along the ray a cubic
- * (hexahedron_field_fs.glsl) integrated as the hexahedron mode says
- * (hexahedron_accurate_fs.glsl, hexahedron_fast_fs.glsl).
- * BuildGeometry() declines any other mesh, and one whose cells have no frame
- * at any corner: those are rendered as tetrahedra. Internal to
+ * vtkHexahedralCellTextures (a mesh of hexahedra, voxels, wedges, pyramids
+ * and tetrahedra) behind vtkPPIRayCellBuffers, marched by glsl/march_fs.glsl
+ * with the cell kind glsl/cell_linear_fs.glsl: the field along the ray a
+ * cubic (hexahedron_field_fs.glsl; pyramid_field_fs.glsl) integrated as the
+ * hexahedron mode says (hexahedron_accurate_fs.glsl, hexahedron_fast_fs.glsl).
+ * BuildGeometry() declines a mesh with any other cell, and one whose cells
+ * have no frame at any corner: those are rendered as tetrahedra. Internal to
  * PPIRay::Rendering.
  */
 #ifndef vtkPPIRayHexahedralCellBuffers_h

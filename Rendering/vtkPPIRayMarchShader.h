@@ -5,7 +5,8 @@
  * As VTK's vtkVolumeShaderComposer: the march pass's fragment shader is the
  * traversal of the cells (vtkPPIRayCellBuffers::GetMarchShader(), with its
  * layout), with the transfer function lookup, the isosurfaces, the
- * projections (BLEND: 0 composite, 1 maximum, 2 minimum intensity), the
+ * projection (BLEND, a ppiray::Projection: 0 composite, 1 maximum,
+ * 2 minimum, 3 average intensity, 4 additive), the
  * integration mode's segment integral (vtkPPIRaySegmentIntegrator) and the
  * viewing ray substituted at their //PPIRay:: markers. The program is
  * rebuilt only when the composed source changes. Internal to

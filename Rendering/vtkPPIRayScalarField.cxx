@@ -6,6 +6,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkObject.h"
 #include "vtkSetGet.h"
+#include "vtkShaderProgram.h"
 
 #include <algorithm>
 #include <cmath>
@@ -122,9 +123,18 @@ vtkPPIRayScalarField::Status vtkPPIRayScalarField::Fail(
 }
 
 //------------------------------------------------------------------------------
-void vtkPPIRayScalarField::NormalizingMap(double ab[2]) const
+void vtkPPIRayScalarField::BindProjection(
+  vtkShaderProgram* program, const double averageRange[2]) const
 {
   const double width = this->Range[1] - this->Range[0];
-  ab[0] = width > 0 ? 1.0 / width : 0.0;
-  ab[1] = width > 0 ? (this->Shift - this->Range[0]) / width : 1.0;
+  const float normalizing[2] = { static_cast<float>(width > 0 ? 1.0 / width : 0.0),
+    static_cast<float>(width > 0 ? (this->Shift - this->Range[0]) / width : 1.0) };
+  program->SetUniform2f("normalizedScalar", normalizing);
+  const double limit = VTK_FLOAT_MAX;
+  float range[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    range[i] = static_cast<float>(std::max(-limit, std::min(limit, averageRange[i] - this->Shift)));
+  }
+  program->SetUniform2f("averageRange", range);
 }

@@ -22,6 +22,7 @@ class vtkDataArray;
 class vtkDataSet;
 class vtkDoubleArray;
 class vtkObject;
+class vtkShaderProgram;
 
 class vtkPPIRayScalarField
 {
@@ -58,11 +59,14 @@ public:
   /** Range of the rendered values (before the shift). */
   const double* GetRange() const { return this->Range; }
   /**
-   * (a, b) with a v + b the value v as stored (shifted) normalized to the
-   * range, (v + shift - min) / (max - min), as vtkGPUVolumeRayCastMapper's
-   * projections see a scalar; 1 for a constant field.
+   * The uniforms of the average-intensity and additive projections
+   * (projection_fs.glsl): normalizedScalar, (a, b) with a v + b the value v
+   * as stored (shifted) normalized to the range, (v + shift - min) /
+   * (max - min), as vtkGPUVolumeRayCastMapper's projections see a scalar (1
+   * for a constant field); averageRange, `averageRange` shifted as the
+   * values are.
    */
-  void NormalizingMap(double ab[2]) const;
+  void BindProjection(vtkShaderProgram* program, const double averageRange[2]) const;
   /** When the values last changed. */
   vtkMTimeType GetMTime() const { return this->Time.GetMTime(); }
 

@@ -1,5 +1,6 @@
 #include "vtkPPIRaySegmentIntegrator.h"
 
+#include "ppirayMapperModes.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkPreIntegrationTable.h"
@@ -8,15 +9,12 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkTimeStamp.h"
-#include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include "piece_exact_fs.h"
 #include "piece_ppi_fs.h"
 #include "segment_average_fs.h"
 #include "segment_full_fs.h"
 #include "segment_split_fs.h"
-
-using Mapper = vtkUnstructuredGridGPURayCastMapper;
 
 namespace
 {
@@ -36,7 +34,7 @@ void LinearClamped(vtkTextureObject* texture, vtkOpenGLRenderWindow* context)
 class PsiTableIntegrator : public vtkPPIRaySegmentIntegrator
 {
 public:
-  int GetIntegrationMode() const override { return Mapper::PARTIAL_PRE_INTEGRATION; }
+  int GetIntegrationMode() const override { return ppiray::PartialPreIntegration; }
   std::string GetShaderCode() const override
   {
     return std::string(piece_ppi_fs) + segment_split_fs;
@@ -80,7 +78,7 @@ private:
 class ExactLinearIntegrator : public vtkPPIRaySegmentIntegrator
 {
 public:
-  int GetIntegrationMode() const override { return Mapper::EXACT_LINEAR; }
+  int GetIntegrationMode() const override { return ppiray::ExactLinear; }
   std::string GetShaderCode() const override
   {
     return std::string(piece_exact_fs) + segment_split_fs;
@@ -91,7 +89,7 @@ public:
 class AverageColorIntegrator : public vtkPPIRaySegmentIntegrator
 {
 public:
-  int GetIntegrationMode() const override { return Mapper::AVERAGE_COLOR; }
+  int GetIntegrationMode() const override { return ppiray::AverageColor; }
   std::string GetShaderCode() const override { return segment_average_fs; }
 };
 
@@ -101,7 +99,7 @@ public:
 class FullTableIntegrator : public vtkPPIRaySegmentIntegrator
 {
 public:
-  int GetIntegrationMode() const override { return Mapper::FULL_PRE_INTEGRATION; }
+  int GetIntegrationMode() const override { return ppiray::FullPreIntegration; }
   std::string GetShaderCode() const override { return segment_full_fs; }
   bool Update(vtkOpenGLRenderWindow* context, const Inputs& inputs, vtkObject* reporter) override
   {
@@ -164,11 +162,11 @@ std::unique_ptr<vtkPPIRaySegmentIntegrator> vtkPPIRaySegmentIntegrator::New(int 
 {
   switch (integrationMode)
   {
-    case Mapper::EXACT_LINEAR:
+    case ppiray::ExactLinear:
       return std::unique_ptr<vtkPPIRaySegmentIntegrator>(new ExactLinearIntegrator);
-    case Mapper::AVERAGE_COLOR:
+    case ppiray::AverageColor:
       return std::unique_ptr<vtkPPIRaySegmentIntegrator>(new AverageColorIntegrator);
-    case Mapper::FULL_PRE_INTEGRATION:
+    case ppiray::FullPreIntegration:
       return std::unique_ptr<vtkPPIRaySegmentIntegrator>(new FullTableIntegrator);
     default:
       return std::unique_ptr<vtkPPIRaySegmentIntegrator>(new PsiTableIntegrator);

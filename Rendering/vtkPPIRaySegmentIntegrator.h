@@ -7,8 +7,8 @@
  * function integrateSegment() that GetShaderCode() defines; Update() makes
  * the mode's tables current (the Psi texture of PARTIAL_PRE_INTEGRATION, the
  * 3D table of FULL_PRE_INTEGRATION) and Bind() gives them to the program.
- * New() makes the integrator of one of vtkUnstructuredGridGPURayCastMapper's
- * IntegrationModes. Internal to PPIRay::Rendering.
+ * New() makes the integrator of a ppiray::IntegrationMode
+ * (ppirayMapperModes.h). Internal to PPIRay::Rendering.
  */
 #ifndef vtkPPIRaySegmentIntegrator_h
 #define vtkPPIRaySegmentIntegrator_h
@@ -31,7 +31,7 @@ class vtkPPIRaySegmentIntegrator
 public:
   virtual ~vtkPPIRaySegmentIntegrator() = default;
 
-  /** The integrator of an IntegrationModes value. */
+  /** The integrator of a ppiray::IntegrationMode value. */
   static std::unique_ptr<vtkPPIRaySegmentIntegrator> New(int integrationMode);
   virtual int GetIntegrationMode() const = 0;
 

@@ -1,11 +1,11 @@
 /**
  * @class   vtkUnstructuredGridGPURayCastMapper
- * @brief   GPU ray casting of tetrahedral grids with partial pre-integration
+ * @brief   GPU ray casting of unstructured grids with partial pre-integration
  *
  * A drop-in vtkUnstructuredGridVolumeMapper: rays march from cell to cell in a
  * fragment shader (Weiler et al. 2003; Espinha & Celes 2005) and integrate the
- * volume rendering equation exactly for linear cells and a piecewise-linear
- * transfer function: every ray segment is split at every transfer function
+ * volume rendering equation exactly for each cell's field and a
+ * piecewise-linear transfer function: every ray segment is split at every transfer function
  * control point it crosses and integrated with Moreland and Angel's partial
  * pre-integration (Psi table). Depth peeling of the boundary re-enters
  * non-convex meshes, meshes with holes and disconnected parts.
@@ -24,28 +24,28 @@
  * Clipping planes (vtkAbstractMapper::AddClippingPlane, at most 6; each keeps
  * the side its normal points to) cut every ray piece exactly.
  *
- * Caches, each rebuilt for one reason (counted, see Get*UploadCount()):
+ * Caches, each rebuilt for one reason (counted, see GetStatistics()):
  * geometry (planes, neighbours, boundary) when points or cells change; the
  * field when the scalars change; the transfer function when the volume
  * property changes; the Psi table once. The mapper coordinates collaborators
  * that each own one concept and its GL objects (Documentation/architecture.md).
  *
- * Supported today: tetrahedra, hexahedra (natively or split, see
- * SetHexahedronMode()), voxels, wedges and pyramids (split into conforming
- * tetrahedra), mixed freely; other cells are reported and skipped. Composite
- * blending, perspective and parallel cameras, the integration modes of
+ * Cells: tetrahedra, hexahedra, voxels, wedges and pyramids, mixed freely,
+ * marched natively, each with VTK's interpolation (see SetHexahedronMode()
+ * for the exceptions); polyhedra split into conforming tetrahedra; other
+ * cells are reported and skipped. Composite blending and the projections,
+ * isosurfaces, perspective and parallel cameras, the integration modes of
  * SetIntegrationMode().
  */
 #ifndef vtkUnstructuredGridGPURayCastMapper_h
 #define vtkUnstructuredGridGPURayCastMapper_h
 
-#include "ppirayRenderingModule.h" // for export macro
+#include "ppirayRenderingModule.h"                   // for export macro
+#include "vtkUnstructuredGridGPURayCastStatistics.h" // for GetStatistics()
 #include "vtkUnstructuredGridVolumeMapper.h"
 
 #include <memory> // for std::unique_ptr
-#include <vector> // for std::vector
 
-class vtkMatrix4x4;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkUnstructuredGridAlgorithm;
@@ -114,8 +114,12 @@ public:
    * tetrahedral path (Documentation/results.md: on llvmpipe it takes about
    * twice the time of SUBDIVIDE, with a tenth of its error and 160 instead of
    * 576 bytes per hexahedron).
-   * The native modes need a mesh of hexahedra only; a mixed mesh is split
-   * into tetrahedra whatever the mode (with a warning).
+   * In a mesh of hexahedra, voxels, wedges, pyramids and tetrahedra, the
+   * native modes march every cell natively (wedges and tetrahedra with their
+   * affine field; pyramids with the cubic through VTK's field at four points
+   * of the ray, Documentation/algorithms.md "Cell kinds"); SUBDIVIDE, or a
+   * mesh with other cells (polyhedra, quadratic cells), splits every cell
+   * into tetrahedra.
    */
   enum HexahedronModes
   {
@@ -257,19 +261,6 @@ public:
   vtkGetMacro(VectorComponent, int);
   ///@}
 
-  /**
-   * Number of hexahedra (and voxels) the last frame rendered natively (0 when
-   * the mesh was split into tetrahedra).
-   */
-  vtkIdType GetNumberOfHexahedra();
-
-  /**
-   * Number of cells the last frame rendered natively, without subdivision:
-   * hexahedra, voxels, wedges, pyramids and, in a mesh of those, tetrahedra
-   * (0 when the mesh was split into tetrahedra).
-   */
-  vtkIdType GetNumberOfNativeCells();
-
   ///@{
   /**
    * Upper bound on depth-peeling passes per frame (default 64). A mesh that
@@ -355,11 +346,6 @@ public:
   vtkGetMacro(PreIntegrationTableSize, int);
   ///@}
 
-  /**
-   * Seconds the last FULL_PRE_INTEGRATION table build took (0 if none yet).
-   */
-  double GetPreIntegrationTableBuildTime();
-
   ///@{
   /**
    * Opacity at which a ray stops (early ray termination, default 0.999).
@@ -367,19 +353,6 @@ public:
   vtkSetClampMacro(TerminationOpacity, double, 0.5, 1.0);
   vtkGetMacro(TerminationOpacity, double);
   ///@}
-
-  /**
-   * Number of peels the last frame needed.
-   */
-  vtkGetMacro(NumberOfPeels, int);
-
-  /**
-   * March passes the last frame added to continue rays that needed more loop
-   * iterations than one pass takes (thousands of transfer-function control
-   * points crossed along a ray; some drivers end a shader's loops silently
-   * past a total count, Mesa's llvmpipe at 65,535).
-   */
-  vtkGetMacro(NumberOfContinuations, int);
 
   ///@{
   /**
@@ -417,12 +390,6 @@ public:
   vtkBooleanMacro(CountCellSteps, vtkTypeBool);
   ///@}
 
-  /**
-   * Cell steps the last frame's rays took, over every pixel and peel (a step
-   * crosses one cell, or one piece of a folded cell); 0 unless CountCellSteps.
-   */
-  vtkGetMacro(NumberOfCellSteps, vtkIdType);
-
   ///@{
   /**
    * Time every pass of a frame on the GPU (default off): GL timer queries
@@ -435,70 +402,11 @@ public:
   ///@}
 
   /**
-   * The kinds of pass a frame draws (TimePasses): the opaque depth copy and
-   * target clears, the near-plane sections (camera inside), each layer of
-   * boundary triangles with its occlusion query, each march, each check for
-   * rays left unfinished by the loop budget, the composite.
+   * What the last frame did: cells rendered natively or as tetrahedra,
+   * caches rebuilt, peels, continuations, cell steps, pass times, GPU
+   * memory. Refreshed at the end of every frame.
    */
-  enum PassKinds
-  {
-    SETUP_PASS = 0,
-    NEAR_PLANE_ENTRY_PASS = 1,
-    ENTRY_PASS = 2,
-    MARCH_PASS = 3,
-    CONTINUATION_CHECK_PASS = 4,
-    COMPOSITE_PASS = 5,
-    NUMBER_OF_PASS_KINDS = 6
-  };
-
-  /**
-   * GPU milliseconds the last frame spent in passes of `kind`, and how many
-   * it drew (0 unless TimePasses and the GL has timer queries).
-   */
-  double GetPassTime(int kind);
-  int GetNumberOfPasses(int kind);
-  static const char* GetPassKindName(int kind);
-
-  /**
-   * CPU milliseconds of the last frame before its first pass: updating what
-   * changed, the near-plane sections, uniforms (measured whether or not
-   * TimePasses).
-   */
-  vtkGetMacro(PreparationTime, double);
-
-  /**
-   * Bytes this mapper holds on the GPU (cell textures, boundary, transfer
-   * function, Psi table, render targets).
-   */
-  vtkIdType GetGPUMemorySize();
-
-  ///@{
-  /**
-   * How many times each cache was (re)built and uploaded: lets tests assert
-   * that a transfer function edit did not re-upload the geometry.
-   */
-  int GetGeometryUploadCount();
-  int GetFieldUploadCount();
-  int GetTransferFunctionUploadCount();
-  ///@}
-
-  /**
-   * Number of tetrahedra rendered (after skipping unsupported and flat cells).
-   */
-  vtkIdType GetNumberOfTetrahedra();
-
-  ///@{
-  /**
-   * A convexified grid (cell array "ppirayBoundaryCell"): the mesh's boundary
-   * faces joined to the imaginary faces on them where point ids do not join
-   * them (split by Steiner points, or across a seam) — rays cross these —,
-   * those of them split into several pieces, and those left open (rays
-   * leave there and re-enter by depth peeling; a warning names them).
-   */
-  vtkIdType GetNumberOfLinkedBoundaryFaces();
-  vtkIdType GetNumberOfSplitBoundaryFaces();
-  vtkIdType GetNumberOfUnlinkedBoundaryFaces();
-  ///@}
+  vtkUnstructuredGridGPURayCastStatistics* GetStatistics();
 
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
   void ReleaseGraphicsResources(vtkWindow*) override;
@@ -522,12 +430,8 @@ protected:
   int PsiTableSize = 512;
   int PreIntegrationTableSize = 64;
   double TerminationOpacity = 0.999;
-  int NumberOfPeels = 0;
-  int NumberOfContinuations = 0;
   vtkTypeBool CountCellSteps = 0;
-  vtkIdType NumberOfCellSteps = 0;
   vtkTypeBool TimePasses = 0;
-  double PreparationTime = 0.0;
   float ImageSampleDistance = 1.0f;
   float MinimumImageSampleDistance = 1.0f;
   float MaximumImageSampleDistance = 10.0f;
@@ -538,15 +442,20 @@ protected:
   // the integration mode's tables.
   // The grid rendered: the input, or its convexified copy (NonConvexMode).
   vtkUnstructuredGridBase* RenderedGrid(vtkUnstructuredGridBase* input);
+  // The grid a frame renders, updated; null (reported unless empty) for none.
+  vtkUnstructuredGridBase* FrameInput(vtkRenderer* ren, vtkVolume* vol);
   // Render() without its timing (TimeToDraw).
   void RenderFrame(vtkRenderer* ren, vtkVolume* vol);
+  // The cells, field, transfer function and integrator current and uploaded.
+  bool UpdateCollaborators(
+    vtkUnstructuredGridBase* input, vtkVolume* vol, vtkOpenGLRenderWindow* context);
   bool UpdateCells(vtkUnstructuredGridBase* input, vtkOpenGLRenderWindow* context);
   bool UpdateField(vtkUnstructuredGridBase* input);
   bool UpdateIntegrator(vtkOpenGLRenderWindow* context);
   // Warns once when other PPIRay volumes of the renderer overlap `vol`.
   void WarnAboutOverlappingVolumes(vtkRenderer* ren, vtkVolume* vol);
-  // The clipping planes (at most 6) in the cells' local frame, 4 floats each.
-  void ClippingPlanesInLocalFrame(vtkMatrix4x4* localToWorld, std::vector<float>& planes);
+  // GetStatistics() from the collaborators, after a frame or a release.
+  void CollectStatistics();
 
 private:
   vtkUnstructuredGridGPURayCastMapper(const vtkUnstructuredGridGPURayCastMapper&) = delete;

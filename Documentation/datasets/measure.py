@@ -34,10 +34,10 @@ def measure(grid, size):
         window.Render()
         times.append(1000 * (time.perf_counter() - start))
     gpu = window_rgb(window)
-    cells = mapper.GetNumberOfTetrahedra() or mapper.GetNumberOfNativeCells()
-    kind = ("tetrahedra" if mapper.GetNumberOfTetrahedra() else
-            "hexahedra" if mapper.GetNumberOfHexahedra() == cells else "cells natively")
-    peels = mapper.GetNumberOfPeels()
+    cells = mapper.GetStatistics().GetNumberOfTetrahedra() or mapper.GetStatistics().GetNumberOfNativeCells()
+    kind = ("tetrahedra" if mapper.GetStatistics().GetNumberOfTetrahedra() else
+            "hexahedra" if mapper.GetStatistics().GetNumberOfHexahedra() == cells else "cells natively")
+    peels = mapper.GetStatistics().GetNumberOfPeels()
     window.Finalize()  # one X connection at a time
     reference = ppiray.vtkUnstructuredGridReferenceRenderer()
     reference.SetInputData(grid)

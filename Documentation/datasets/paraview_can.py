@@ -44,8 +44,8 @@ start = time.perf_counter()
 Render(view)
 ms = 1000 * (time.perf_counter() - start)
 print("input cells %d, hexahedra rendered natively %d, peels %d, %.0f ms per frame"
-      % (mapper.GetInput().GetNumberOfCells(), mapper.GetNumberOfHexahedra(),
-         mapper.GetNumberOfPeels(), ms))
+      % (mapper.GetInput().GetNumberOfCells(), mapper.GetStatistics().GetNumberOfHexahedra(),
+         mapper.GetStatistics().GetNumberOfPeels(), ms))
 
 import ppiray  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402

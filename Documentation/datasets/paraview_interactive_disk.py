@@ -65,7 +65,7 @@ def lit(rgb):
 Render(view)
 SaveScreenshot(os.path.join(out, "still_0.png"), view)
 print("%d cells, still frame %.3f s, image sample distance %.2f, %d lit pixels"
-      % (mapper.GetNumberOfTetrahedra() + mapper.GetNumberOfHexahedra(), mapper.GetTimeToDraw(),
+      % (mapper.GetStatistics().GetNumberOfTetrahedra() + mapper.GetStatistics().GetNumberOfHexahedra(), mapper.GetTimeToDraw(),
          mapper.GetImageSampleDistance(), lit(frame())), flush=True)
 camera = view.GetActiveCamera()
 for step in range(1, 5):

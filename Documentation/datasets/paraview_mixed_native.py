@@ -44,8 +44,8 @@ for mode in ("Accurate", "Subdivide"):
     images[mode] = vtk_to_numpy(png.GetOutput().GetPointData().GetScalars())[:, :3].astype(float)
     import ppiray  # noqa: F401  (the mapper's Python class, for its counters)
     mapper = display.GetClientSideObject().GetActiveRepresentation().GetActiveVolumeMapper()
-    print(mode, "native cells", mapper.GetNumberOfNativeCells(), "tetrahedra",
-          mapper.GetNumberOfTetrahedra(), "lit pixels", int((images[mode].max(axis=1) > 0).sum()))
+    print(mode, "native cells", mapper.GetStatistics().GetNumberOfNativeCells(), "tetrahedra",
+          mapper.GetStatistics().GetNumberOfTetrahedra(), "lit pixels", int((images[mode].max(axis=1) > 0).sum()))
 diff = np.abs(images["Accurate"] - images["Subdivide"])
 print("native against split: max %.0f, p99 %.1f, pixels > 8: %d"
       % (diff.max(), np.percentile(diff, 99), int((diff.max(axis=1) > 8).sum())))

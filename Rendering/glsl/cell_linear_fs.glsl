@@ -211,11 +211,13 @@ int nearestCrossedFace(Cell cell, int entryFace, vec3 origin, vec3 direction, fl
 }
 
 // The face of a hexahedron across the one a walk back came in by, where it
-// has a neighbour (-1: none, or another kind).
+// has a neighbour (-1: none, a boundary face with or without a re-entry
+// list, or another kind).
 int oppositeFace(int cell, int kind, int entryFace)
 {
   int across = entryFace >= 0 && kind == 0 ? entryFace ^ 1 : -1;
-  return across >= 0 && neighborCode(cell, across) != -1 ? across : -1;
+  int code = across >= 0 ? neighborCode(cell, across) : -1;
+  return code != -1 && !(REENTRY_EDGES && code >= REENTRY_FACE) ? across : -1;
 }
 
 // The face the ray leaves the cell by, entered at t through `entryFace`

@@ -15,7 +15,7 @@ float pixelFootprint(float t)
 }
 
 // Out through a boundary face with reflex edges (its partners across its
-// three edges listed at texel `list`, ppirayReflexEdges.h), at ray
+// edges, FACE_EDGES at most, listed first at texel `list`, ppirayReflexEdges.h), at ray
 // parameter t: the partner the ray enters within a quarter of a pixel's
 // width further on, if any (t moves to that entry), else -1. Depth peeling
 // finds such an entry by rasterization, which within a fraction of a pixel
@@ -28,13 +28,13 @@ int reentryAcrossEdge(int list, vec3 origin, vec3 direction, inout float t)
   ivec4 across = neighborListTexel(list);
   float tEntry = INFINITY;
   int entry = -1;
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < FACE_EDGES && across[i] >= 0; ++i)
   {
-    int c = max(across[i], 0) / FACES;
-    int e = max(across[i], 0) - FACES * c;
+    int c = across[i] / FACES;
+    int e = across[i] - FACES * c;
     float te;
     float outside = faceEntry(c, e, origin, direction, t, te);
-    if (across[i] >= 0 && te < tEntry && outside <= 1.0e-6 * abs(te))
+    if (te < tEntry && outside <= 1.0e-6 * abs(te))
     {
       tEntry = te;
       entry = across[i];

@@ -10,7 +10,7 @@
 //                   [--views N] [--peer-views N] [--inside] [--check N]
 //                   [--transfer-function ramp|realistic|cutoff|detailed] [--breakdown]
 //                   [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,ppiray-compact,
-//                              ppiray-subdivide,pt,raycast,zsweep]
+//                              ppiray-subdivide,ppiray-fast,pt,raycast,zsweep]
 //
 // --check N: after its frames, each PPIRay mapper renders the last view at
 // N x N and every pixel is compared with the CPU reference renderer (p99 and
@@ -175,7 +175,7 @@ double FrameMilliseconds(vtkRenderWindow* window)
 void PrintBreakdown(const std::string& name, const std::string& size, vtkRenderWindow* window,
   vtkUnstructuredGridGPURayCastMapper* mapper, const std::function<void()>& nextView, int views)
 {
-  const int kinds = vtkUnstructuredGridGPURayCastMapper::NUMBER_OF_PASS_KINDS;
+  const int kinds = vtkUnstructuredGridGPURayCastStatistics::NUMBER_OF_PASS_KINDS;
   std::vector<double> ms(kinds, 0.0), passes(kinds, 0.0);
   double preparation = 0.0, wall = 0.0;
   mapper->TimePassesOn();
@@ -183,11 +183,11 @@ void PrintBreakdown(const std::string& name, const std::string& size, vtkRenderW
   {
     nextView();
     wall += FrameMilliseconds(window);
-    preparation += mapper->GetPreparationTime();
+    preparation += mapper->GetStatistics()->GetPreparationTime();
     for (int k = 0; k < kinds; ++k)
     {
-      ms[k] += mapper->GetPassTime(k);
-      passes[k] += mapper->GetNumberOfPasses(k);
+      ms[k] += mapper->GetStatistics()->GetPassTime(k);
+      passes[k] += mapper->GetStatistics()->GetNumberOfPasses(k);
     }
   }
   mapper->TimePassesOff();
@@ -201,7 +201,7 @@ void PrintBreakdown(const std::string& name, const std::string& size, vtkRenderW
   {
     gpu += ms[k];
     std::printf("| %s | %.2f | %.2f | %.1f %% |\n",
-      vtkUnstructuredGridGPURayCastMapper::GetPassKindName(k), ms[k] / views, passes[k] / views,
+      vtkUnstructuredGridGPURayCastStatistics::GetPassKindName(k), ms[k] / views, passes[k] / views,
       100.0 * ms[k] / wall);
   }
   std::printf("| all passes | %.2f | | %.1f %% |\n| frame (wall) | %.2f | | |\n", gpu / views,
@@ -272,7 +272,7 @@ Row MeasureOrbit(const std::string& name, vtkRenderWindow* window,
   row.Frames = views;
   if (auto* ours = vtkUnstructuredGridGPURayCastMapper::SafeDownCast(mapper))
   {
-    row.GPUBytes = static_cast<double>(ours->GetGPUMemorySize());
+    row.GPUBytes = static_cast<double>(ours->GetStatistics()->GetGPUMemorySize());
     // The same orbit again, untimed, counting the march's cell steps (a
     // read-back per pass).
     ours->CountCellStepsOn();
@@ -281,7 +281,7 @@ Row MeasureOrbit(const std::string& name, vtkRenderWindow* window,
     {
       nextView();
       window->Render();
-      steps += static_cast<double>(ours->GetNumberOfCellSteps());
+      steps += static_cast<double>(ours->GetStatistics()->GetNumberOfCellSteps());
     }
     ours->CountCellStepsOff();
     row.CellStepsPerFrame = steps / views;
@@ -454,7 +454,7 @@ int main(int argc, char* argv[])
            " [--views N] [--peer-views N] [--inside] [--check N]"
            " [--transfer-function ramp|realistic|cutoff|detailed] [--breakdown]"
            " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,ppiray-compact,"
-           "ppiray-subdivide,pt,raycast,zsweep]\n\n"
+           "ppiray-subdivide,ppiray-fast,pt,raycast,zsweep]\n\n"
            "Frame time of PPIRay against VTK's unstructured volume mappers on one scene, same\n"
            "run: median ms per frame over an orbit of views after a warm-up frame.\n"
            "  --file MESH.vtu     a tetrahedral mesh and its point scalars (default: the wavelet)\n"
@@ -477,7 +477,8 @@ int main(int argc, char* argv[])
            "                      pre-integration), ppiray-exact, ppiray-full, ppiray-average,\n"
            "                      ppiray-compact (partial, TETRAHEDRON_COMPACT layout),\n"
            "                      ppiray-subdivide (partial, HEXAHEDRON_SUBDIVIDE: every\n"
-           "                      cell split into tetrahedra),\n"
+           "                      cell split into tetrahedra), ppiray-fast (partial,\n"
+           "                      HEXAHEDRON_FAST),\n"
            "                      pt (vtkProjectedTetrahedraMapper), raycast\n"
            "                      (vtkUnstructuredGridVolumeRayCastMapper), zsweep\n"
            "                      (vtkUnstructuredGridVolumeZSweepMapper)\n";
@@ -512,12 +513,17 @@ int main(int argc, char* argv[])
   {
     std::cerr << "measuring " << name << " ..." << std::endl;
     if (name == "ppiray" || name == "ppiray-exact" || name == "ppiray-average" ||
-        name == "ppiray-full" || name == "ppiray-compact" || name == "ppiray-subdivide")
+        name == "ppiray-full" || name == "ppiray-compact" || name == "ppiray-subdivide" ||
+        name == "ppiray-fast")
     {
       vtkNew<vtkUnstructuredGridGPURayCastMapper> m;
       if (name == "ppiray-subdivide")
       {
         m->SetHexahedronModeToSubdivide();
+      }
+      else if (name == "ppiray-fast")
+      {
+        m->SetHexahedronModeToFast();
       }
       m->SetTetrahedronLayout(name == "ppiray-compact"
                                 ? vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_COMPACT
@@ -530,12 +536,13 @@ int main(int argc, char* argv[])
       Append(rows, Measure(std::string("PPIRay ") + m->GetIntegrationModeAsString() +
                              (name == "ppiray-compact"      ? " (compact)"
                                : name == "ppiray-subdivide" ? " (subdivided)"
+                               : name == "ppiray-fast"      ? " (fast)"
                                                             : ""),
                      m, grid, o, o.Views));
       if (name == "ppiray-full")
       {
         std::printf("FULL_PRE_INTEGRATION table %d^3 built in %.3f s\n",
-          m->GetPreIntegrationTableSize(), m->GetPreIntegrationTableBuildTime());
+          m->GetPreIntegrationTableSize(), m->GetStatistics()->GetPreIntegrationTableBuildTime());
       }
     }
     else if (name == "pt")

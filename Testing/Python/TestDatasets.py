@@ -82,10 +82,10 @@ def compare(grid, size):
     window.Render()
     ms = 1000.0 * (time.perf_counter() - start)
     gpu = window_rgb(window)
-    cells = mapper.GetNumberOfTetrahedra() or mapper.GetNumberOfNativeCells()
-    kind = ("tetrahedra" if mapper.GetNumberOfTetrahedra() else
-            "hexahedra" if mapper.GetNumberOfHexahedra() == cells else "cells natively")
-    peels = mapper.GetNumberOfPeels()
+    cells = mapper.GetStatistics().GetNumberOfTetrahedra() or mapper.GetStatistics().GetNumberOfNativeCells()
+    kind = ("tetrahedra" if mapper.GetStatistics().GetNumberOfTetrahedra() else
+            "hexahedra" if mapper.GetStatistics().GetNumberOfHexahedra() == cells else "cells natively")
+    peels = mapper.GetStatistics().GetNumberOfPeels()
     camera = renderer.GetActiveCamera()
     window.Finalize()  # one X connection at a time, whatever the number of cases
     rgba, seconds = reference_rgba(grid, prop, camera, size)

@@ -136,12 +136,12 @@ def run_worker(args):
                 pixels.reshape(args.height, args.width, 3))
     result = {"ms": times, "cells": grid.GetNumberOfCells(), "gpu_bytes": "", **extra}
     if method == "ppiray":
-        result["gpu_bytes"] = mapper.GetGPUMemorySize()
-        result["hexahedra"] = mapper.GetNumberOfHexahedra()
-        result["native"] = mapper.GetNumberOfNativeCells()
-        result["tetrahedra"] = mapper.GetNumberOfTetrahedra()
+        result["gpu_bytes"] = mapper.GetStatistics().GetGPUMemorySize()
+        result["hexahedra"] = mapper.GetStatistics().GetNumberOfHexahedra()
+        result["native"] = mapper.GetStatistics().GetNumberOfNativeCells()
+        result["tetrahedra"] = mapper.GetStatistics().GetNumberOfTetrahedra()
         if settings["mode"] == 2:
-            result["table_build_s"] = mapper.GetPreIntegrationTableBuildTime()
+            result["table_build_s"] = mapper.GetStatistics().GetPreIntegrationTableBuildTime()
     print("RESULT " + json.dumps(result))
     return 0
 

@@ -50,13 +50,13 @@ def orbit(grid, prop, size, views, check, start_camera=None):
         window.Render()
         window.WaitForCompletion()
         times.append(1000.0 * (time.perf_counter() - start))
-        peels = max(peels, mapper.GetNumberOfPeels())
+        peels = max(peels, mapper.GetStatistics().GetNumberOfPeels())
         images.append(window_rgb(window))
         if v == 0 and check is not None:
             rgba, _ = reference_rgba(check, prop, camera, size)
             first = compare_with_reference(images[0], rgba)
-    gpu = mapper.GetGPUMemorySize()
-    open_faces = mapper.GetNumberOfUnlinkedBoundaryFaces()
+    gpu = mapper.GetStatistics().GetGPUMemorySize()
+    open_faces = mapper.GetStatistics().GetNumberOfUnlinkedBoundaryFaces()
     window.Finalize()
     return (float(np.median(times)), peels, gpu, images,
             first if check is not None else None, first_camera, open_faces)

@@ -313,13 +313,13 @@ def main():
         times.append(time.perf_counter() - start)
     save(window, args.out)
     ms = 1000 * float(np.median(times))
-    tets, native = mapper.GetNumberOfTetrahedra(), mapper.GetNumberOfNativeCells()
+    tets, native = mapper.GetStatistics().GetNumberOfTetrahedra(), mapper.GetStatistics().GetNumberOfNativeCells()
     # VTK_TETRA 10; quadratic, Lagrange and Bezier tetrahedra (24, 71, 78) are
     # rendered through their corners; other cells as the tetrahedra they split into.
     types = set(vtk_to_numpy(grid.GetCellTypesArray()))
     how = ("" if types <= {10} else " (higher-order ones by their corners)"
            if types <= {10, 24, 71, 78} else " (cells split)")
-    kind = "hexahedra" if mapper.GetNumberOfHexahedra() == native else "cells"
+    kind = "hexahedra" if mapper.GetStatistics().GetNumberOfHexahedra() == native else "cells"
     rendered = "%d %s natively" % (native, kind) if native else "%d tetrahedra%s" % (tets, how)
     if tets + native == 0:
         print("error     nothing was rendered (see the messages above)", file=sys.stderr)
@@ -331,8 +331,8 @@ def main():
         " ".join("%g:%g" % p for p in args.opacity), *prop.GetRGBTransferFunction().GetRange(),
         prop.GetScalarOpacityUnitDistance(), args.mode, args.blend))
     print("PPIRay    %.1f ms/frame at %dx%d (median of %d), %d peels, %.1f MB on the GPU" % (
-        ms, width, height, args.frames, mapper.GetNumberOfPeels(),
-        mapper.GetGPUMemorySize() / 2**20))
+        ms, width, height, args.frames, mapper.GetStatistics().GetNumberOfPeels(),
+        mapper.GetStatistics().GetGPUMemorySize() / 2**20))
     print("image     %s" % os.path.abspath(args.out))
     ours = read_png(args.out)
     if not (ours.max(axis=1) > 0).any():

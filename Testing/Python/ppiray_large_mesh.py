@@ -103,8 +103,8 @@ def main():
     second = time.perf_counter() - start
     print("%dx%d: first frame (build, upload, render) %.1f s, second frame %.2f s, %d peels, "
           "%d continuations, %.2f GB on the GPU; peak memory so far %.1f GB"
-          % (args.size, args.size, first, second, mapper.GetNumberOfPeels(),
-             mapper.GetNumberOfContinuations(), mapper.GetGPUMemorySize() / 1e9,
+          % (args.size, args.size, first, second, mapper.GetStatistics().GetNumberOfPeels(),
+             mapper.GetStatistics().GetNumberOfContinuations(), mapper.GetStatistics().GetGPUMemorySize() / 1e9,
              peak_gigabytes()), flush=True)
 
     window.SetSize(args.check, args.check)

@@ -54,7 +54,7 @@ int Compare(const char* name, vtkUnstructuredGrid* grid, const std::array<double
   scene.Show(peeled, grid, eye, centre);
   scene.Window->Render();
   const auto peeledImage = ppiray_test::ReadRGB(scene.Window);
-  const int peels = peeled->GetNumberOfPeels();
+  const int peels = peeled->GetStatistics()->GetNumberOfPeels();
 
   vtkNew<vtkUnstructuredGridGPURayCastMapper> oneLayer;
   ppiray_test::UseTetrahedronLayout(oneLayer);
@@ -65,7 +65,7 @@ int Compare(const char* name, vtkUnstructuredGrid* grid, const std::array<double
   oneLayer->SetInputData(convex);
   scene.Window->Render();
   const auto convexImage = ppiray_test::ReadRGB(scene.Window);
-  const int convexPeels = oneLayer->GetNumberOfPeels();
+  const int convexPeels = oneLayer->GetStatistics()->GetNumberOfPeels();
 
   int largest = 0;
   for (size_t i = 0; i < convexImage.size(); ++i)
@@ -87,23 +87,23 @@ int Compare(const char* name, vtkUnstructuredGrid* grid, const std::array<double
   scene.Window->Render();
   const auto modeImage = ppiray_test::ReadRGB(scene.Window);
   const bool modeSame =
-    modeImage == convexImage && byMode->GetNumberOfPeels() == convexPeels &&
+    modeImage == convexImage && byMode->GetStatistics()->GetNumberOfPeels() == convexPeels &&
     plugged->GetNumberOfImaginaryCells() == convexify->GetNumberOfImaginaryCells();
   std::cout << name << ": " << grid->GetNumberOfCells() << " cells + "
             << convexify->GetNumberOfImaginaryCells() << " imaginary, "
             << convexify->GetNumberOfSteinerPoints() << " Steiner points; " << peels
             << " peels as it is, " << convexPeels << " convexified; max " << largest
             << "/255 between the two images; boundary faces joined to imaginary ones "
-            << oneLayer->GetNumberOfLinkedBoundaryFaces() << " ("
-            << oneLayer->GetNumberOfSplitBoundaryFaces() << " split), left open "
-            << oneLayer->GetNumberOfUnlinkedBoundaryFaces() << "\n";
+            << oneLayer->GetStatistics()->GetNumberOfLinkedBoundaryFaces() << " ("
+            << oneLayer->GetStatistics()->GetNumberOfSplitBoundaryFaces() << " split), left open "
+            << oneLayer->GetStatistics()->GetNumberOfUnlinkedBoundaryFaces() << "\n";
   // Without Steiner points every face is shared by point ids; with them the
   // split faces are crossed into their pieces (and a face met through other
   // point ids is joined too): one peel either way, every face joined.
   const bool split = convexify->GetNumberOfSteinerPoints() > 0;
   int errors = 0;
-  if (split != (oneLayer->GetNumberOfSplitBoundaryFaces() > 0) ||
-      oneLayer->GetNumberOfUnlinkedBoundaryFaces() != 0)
+  if (split != (oneLayer->GetStatistics()->GetNumberOfSplitBoundaryFaces() > 0) ||
+      oneLayer->GetStatistics()->GetNumberOfUnlinkedBoundaryFaces() != 0)
   {
     std::cout << "FAILED: " << name << ": expected split faces exactly with Steiner points, and "
               << "none left open\n";
@@ -112,7 +112,8 @@ int Compare(const char* name, vtkUnstructuredGrid* grid, const std::array<double
   if (!modeSame)
   {
     std::cout << "FAILED: " << name << ": NON_CONVEX_CONVEXIFY differs from the convexified "
-              << "grid rendered as input (" << byMode->GetNumberOfPeels() << " peels)\n";
+              << "grid rendered as input (" << byMode->GetStatistics()->GetNumberOfPeels()
+              << " peels)\n";
     ++errors;
   }
   if (peels < 2 || convexPeels != 1 || largest > 1 || !messages->Errors.empty() ||
@@ -220,7 +221,7 @@ int TestGPURayCastConvexified(int argc, char* argv[])
     scene.Window->Render();
     made = vtkUnstructuredGridConvexify::SafeDownCast(mapper->GetConvexifier()) != nullptr;
     image = ppiray_test::ReadRGB(scene.Window);
-    return mapper->GetNumberOfPeels();
+    return mapper->GetStatistics()->GetNumberOfPeels();
   };
   vtkNew<ppiray_test::MessageCollector> explicitMessages;
   vtkNew<vtkUnstructuredGridConvexify> explicitConvexify;

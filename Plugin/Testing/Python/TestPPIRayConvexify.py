@@ -40,7 +40,7 @@ def main(plugin, convexify_plugin, temporary, data):
         return pt.read_rgb(path).astype(int)
 
     peeled = shot("peeled")
-    peels = pt.mapper_of(display).GetNumberOfPeels()
+    peels = pt.mapper_of(display).GetStatistics().GetNumberOfPeels()
     covered, p99, largest = pt.against_reference(
         view, display, os.path.join(temporary, "TestPPIRayConvexify_peeled.png"), "s")
     print("peeled: %d peels, %d pixels against the reference: p99 %.2f, max %.2f"
@@ -55,9 +55,9 @@ def main(plugin, convexify_plugin, temporary, data):
     mapper = pt.mapper_of(display)
     made = mapper.GetConvexifier()
     print("Non-Convex Mode = Convexify: %d peels, convexifier %s, max difference %d"
-          % (mapper.GetNumberOfPeels(), made.GetClassName() if made else None,
+          % (mapper.GetStatistics().GetNumberOfPeels(), made.GetClassName() if made else None,
              np.abs(by_mode - peeled).max()))
-    if made is None or mapper.GetNumberOfPeels() != 1:
+    if made is None or mapper.GetStatistics().GetNumberOfPeels() != 1:
         failures.append("Non-Convex Mode = Convexify did not render in one peel")
     if np.abs(by_mode - peeled).max() > 1:
         failures.append("Non-Convex Mode = Convexify changed the image")
@@ -70,7 +70,7 @@ def main(plugin, convexify_plugin, temporary, data):
     Hide(reader, view)
     filtered = pt.show_volume(convexified, view, "s", rgb, opacity, unit_distance=0.1)
     by_filter = shot("filter")
-    filter_peels = pt.mapper_of(filtered).GetNumberOfPeels()
+    filter_peels = pt.mapper_of(filtered).GetStatistics().GetNumberOfPeels()
     got = pt.mapper_of(filtered).GetInput()
     print("PPIRay Convexify: %d -> %d cells, vtkGhostType %s, %d peels, max difference %d"
           % (cells_in, cells_out, hidden.GetRange() if hidden else None, filter_peels,

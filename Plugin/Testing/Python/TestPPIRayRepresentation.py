@@ -44,8 +44,8 @@ from paraview.simple import (  # noqa: E402
 
 
 def counts(mapper):
-    return (mapper.GetGeometryUploadCount(), mapper.GetFieldUploadCount(),
-            mapper.GetTransferFunctionUploadCount())
+    return (mapper.GetStatistics().GetGeometryUploadCount(), mapper.GetStatistics().GetFieldUploadCount(),
+            mapper.GetStatistics().GetTransferFunctionUploadCount())
 
 
 def last_frame_rgb(view):
@@ -97,8 +97,8 @@ def main(plugin, baselines, temporary):
         failures.append("PPIRay Volume differs from VTK's evaluation of ParaView's lookup table: "
                         "%d pixels, p99 %.2f, max %.2f /255" % (covered, p99, largest))
     mapper = pt.mapper_of(display)
-    if mapper.GetNumberOfTetrahedra() != 5 * 20 ** 3:
-        failures.append("expected 40000 tetrahedra, got %d" % mapper.GetNumberOfTetrahedra())
+    if mapper.GetStatistics().GetNumberOfTetrahedra() != 5 * 20 ** 3:
+        failures.append("expected 40000 tetrahedra, got %d" % mapper.GetStatistics().GetNumberOfTetrahedra())
     first = counts(mapper)
     if first != (1, 1, 1):
         failures.append("first render uploaded (geometry, field, TF) = %s, expected (1, 1, 1)"

@@ -56,15 +56,15 @@ def main(plugin, baselines, temporary, data_root):
 
     check_image("TestPPIRayRepresentationBluntFin")
     mapper = pt.mapper_of(display)
-    if mapper.GetNumberOfHexahedra() != 37479 or mapper.GetNumberOfTetrahedra() != 0:
+    if mapper.GetStatistics().GetNumberOfHexahedra() != 37479 or mapper.GetStatistics().GetNumberOfTetrahedra() != 0:
         failures.append("natively: %d hexahedra, %d tetrahedra, expected 37479 and 0"
-                        % (mapper.GetNumberOfHexahedra(), mapper.GetNumberOfTetrahedra()))
+                        % (mapper.GetStatistics().GetNumberOfHexahedra(), mapper.GetStatistics().GetNumberOfTetrahedra()))
 
     display.HexahedronMode = "Subdivide"
     check_image("TestPPIRayRepresentationBluntFinSubdivide")
-    if mapper.GetNumberOfTetrahedra() != EXPECTED_TETRAHEDRA or mapper.GetNumberOfHexahedra():
+    if mapper.GetStatistics().GetNumberOfTetrahedra() != EXPECTED_TETRAHEDRA or mapper.GetStatistics().GetNumberOfHexahedra():
         failures.append("Subdivide: %d tetrahedra, %d hexahedra, expected %d and 0"
-                        % (mapper.GetNumberOfTetrahedra(), mapper.GetNumberOfHexahedra(),
+                        % (mapper.GetStatistics().GetNumberOfTetrahedra(), mapper.GetStatistics().GetNumberOfHexahedra(),
                            EXPECTED_TETRAHEDRA))
     pt.finish(failures)
     return 0

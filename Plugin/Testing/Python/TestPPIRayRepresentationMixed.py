@@ -64,13 +64,13 @@ def main(plugin, baselines, temporary, data_root):
         ms = 1000 * (time.time() - start)
         cells = mapper.GetInput().GetNumberOfCells()
         print("%s: %d input cells, %d tetrahedra, %d peels, %.0f ms per frame"
-              % (mode, cells, mapper.GetNumberOfTetrahedra(), mapper.GetNumberOfPeels(), ms),
+              % (mode, cells, mapper.GetStatistics().GetNumberOfTetrahedra(), mapper.GetStatistics().GetNumberOfPeels(), ms),
               flush=True)
         if cells != 2192:
             failures.append("%s: the mapper got %d cells, not the 2,192 hexahedra and wedges"
                             % (mode, cells))
-        if mapper.GetNumberOfPeels() > 4:
-            failures.append("%s: %d peels" % (mode, mapper.GetNumberOfPeels()))
+        if mapper.GetStatistics().GetNumberOfPeels() > 4:
+            failures.append("%s: %d peels" % (mode, mapper.GetStatistics().GetNumberOfPeels()))
     pt.finish(failures)
     return 0
 

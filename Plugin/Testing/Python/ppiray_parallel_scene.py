@@ -31,8 +31,8 @@ def render_scene(name, source, view, output):
     pt.screenshot(view, os.path.join(output, "%s%s.png" % (name, "-rank%d" % rank if rank else "")))
     mapper = pt.mapper_of(display)
     print("PPIRAY rank %d of %d scene %s tetrahedra %d hexahedra %d peels %d"
-          % (rank, ranks, name, mapper.GetNumberOfTetrahedra(), mapper.GetNumberOfHexahedra(),
-             mapper.GetNumberOfPeels()), flush=True)
+          % (rank, ranks, name, mapper.GetStatistics().GetNumberOfTetrahedra(), mapper.GetStatistics().GetNumberOfHexahedra(),
+             mapper.GetStatistics().GetNumberOfPeels()), flush=True)
     Hide(source, view)
 
 

@@ -81,9 +81,10 @@ using Field = std::function<double(double, double, double)>;
 using Keep = std::function<bool(int, int, int)>;
 
 // Voxels (i, j, k) in [0, n)^3 of size h where keep(i, j, k), each split into
-// six tetrahedra around its main diagonal; points shared; scalar "s" = f(x).
-inline vtkSmartPointer<vtkUnstructuredGrid> VoxelTetrahedra(
-  const int n[3], double h, const double origin[3], const Keep& keep, const Field& f)
+// six tetrahedra around its main diagonal, or each a VTK_HEXAHEDRON; points
+// shared; scalar "s" = f(x).
+inline vtkSmartPointer<vtkUnstructuredGrid> VoxelTetrahedra(const int n[3], double h,
+  const double origin[3], const Keep& keep, const Field& f, bool hexahedra = false)
 {
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   vtkNew<vtkPoints> points;
@@ -118,6 +119,14 @@ inline vtkSmartPointer<vtkUnstructuredGrid> VoxelTetrahedra(
         {
           continue;
         }
+        if (hexahedra)
+        {
+          const vtkIdType hex[8] = { point(i, j, k), point(i + 1, j, k), point(i + 1, j + 1, k),
+            point(i, j + 1, k), point(i, j, k + 1), point(i + 1, j, k + 1),
+            point(i + 1, j + 1, k + 1), point(i, j + 1, k + 1) };
+          cells->InsertNextCell(8, hex);
+          continue;
+        }
         for (const auto& path : paths)
         {
           int c[3] = { i, j, k };
@@ -134,7 +143,7 @@ inline vtkSmartPointer<vtkUnstructuredGrid> VoxelTetrahedra(
     }
   }
   grid->SetPoints(points);
-  grid->SetCells(VTK_TETRA, cells);
+  grid->SetCells(hexahedra ? VTK_HEXAHEDRON : VTK_TETRA, cells);
   grid->GetPointData()->SetScalars(scalars);
   return grid;
 }

@@ -296,7 +296,7 @@ int Run(const SceneCase& scene)
     // vtkCell::EvaluatePosition's parametric tolerance (0.001) of the last
     // sample's cell (Documentation/accuracy.md: +0.6 % here, +1.4 % with a
     // step 4 times longer). A count one cell short per ray is 10-13 % low.
-    const double steps = static_cast<double>(mapper->GetNumberOfCellSteps());
+    const double steps = static_cast<double>(mapper->GetStatistics()->GetNumberOfCellSteps());
     const double met = static_cast<double>(march.CellsMet);
     std::printf("%-24s cell steps %.0f, cells met by the march %.0f (%+.3f %%)\n",
       scene.Name.c_str(), steps, met, 100.0 * (steps - met) / met);
@@ -305,9 +305,10 @@ int Run(const SceneCase& scene)
   }
   if (scene.MaximumPeels > 0)
   {
-    std::printf("%-24s peels %d (at most %d)\n", scene.Name.c_str(), mapper->GetNumberOfPeels(),
-      scene.MaximumPeels);
-    fail(mapper->GetNumberOfPeels() > scene.MaximumPeels, "more peels than the geometry needs");
+    std::printf("%-24s peels %d (at most %d)\n", scene.Name.c_str(),
+      mapper->GetStatistics()->GetNumberOfPeels(), scene.MaximumPeels);
+    fail(mapper->GetStatistics()->GetNumberOfPeels() > scene.MaximumPeels,
+      "more peels than the geometry needs");
   }
   return errors;
 }

@@ -53,15 +53,16 @@ int Split(const char* what, vtkUnstructuredGrid* grid, int hexahedronMode, vtkId
   scene.Show(mapper, grid, { 2.5, -1.5, 1.8 }, { 0.5, 0.5, 0.5 });
   scene.Window->Render();
   const auto unsplit = ppiray_test::ReadRGB(scene.Window);
-  const vtkIdType bytes = mapper->GetGPUMemorySize();
+  const vtkIdType bytes = mapper->GetStatistics()->GetGPUMemorySize();
   mapper->SetMaximumBufferTexels(texels);
   scene.Window->Render();
   int errors = Compare(what, scene, grid, unsplit);
-  if (mapper->GetGPUMemorySize() != bytes || !messages->Errors.empty() ||
+  if (mapper->GetStatistics()->GetGPUMemorySize() != bytes || !messages->Errors.empty() ||
       !messages->Warnings.empty())
   {
-    std::cout << "FAILED: " << what << ": " << mapper->GetGPUMemorySize() << " bytes on the GPU, "
-              << bytes << " unsplit; messages [" << messages->Errors << messages->Warnings << "]\n";
+    std::cout << "FAILED: " << what << ": " << mapper->GetStatistics()->GetGPUMemorySize()
+              << " bytes on the GPU, " << bytes << " unsplit; messages [" << messages->Errors
+              << messages->Warnings << "]\n";
     ++errors;
   }
   // Back to one buffer per array: the same image again.

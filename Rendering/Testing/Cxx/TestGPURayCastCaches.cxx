@@ -25,11 +25,13 @@ int TestGPURayCastCaches(int, char*[])
   int errors = 0;
   auto expect = [&](int geometry, int field, int tf, const char* step)
   {
-    std::cout << step << ": uploads geometry " << mapper->GetGeometryUploadCount() << ", field "
-              << mapper->GetFieldUploadCount() << ", transfer function "
-              << mapper->GetTransferFunctionUploadCount() << "\n";
-    if (mapper->GetGeometryUploadCount() != geometry || mapper->GetFieldUploadCount() != field ||
-        mapper->GetTransferFunctionUploadCount() != tf)
+    std::cout << step << ": uploads geometry " << mapper->GetStatistics()->GetGeometryUploadCount()
+              << ", field " << mapper->GetStatistics()->GetFieldUploadCount()
+              << ", transfer function " << mapper->GetStatistics()->GetTransferFunctionUploadCount()
+              << "\n";
+    if (mapper->GetStatistics()->GetGeometryUploadCount() != geometry ||
+        mapper->GetStatistics()->GetFieldUploadCount() != field ||
+        mapper->GetStatistics()->GetTransferFunctionUploadCount() != tf)
     {
       std::cerr << "FAILED after " << step << ": expected " << geometry << " " << field << " " << tf
                 << "\n";
@@ -79,8 +81,8 @@ int TestGPURayCastCaches(int, char*[])
     std::cerr << "FAILED: an edit did not change the image\n";
     ++errors;
   }
-  const vtkIdType tets = mapper->GetNumberOfTetrahedra();
-  const vtkIdType bytes = mapper->GetGPUMemorySize();
+  const vtkIdType tets = mapper->GetStatistics()->GetNumberOfTetrahedra();
+  const vtkIdType bytes = mapper->GetStatistics()->GetGPUMemorySize();
   std::cout << tets << " tetrahedra, GPU bytes " << bytes << "\n";
   if (tets != 6 * 125 || bytes < 96 * tets)
   {
@@ -88,9 +90,10 @@ int TestGPURayCastCaches(int, char*[])
     ++errors;
   }
   mapper->ReleaseGraphicsResources(scene.Window);
-  if (mapper->GetGPUMemorySize() != 0)
+  if (mapper->GetStatistics()->GetGPUMemorySize() != 0)
   {
-    std::cerr << "FAILED: " << mapper->GetGPUMemorySize() << " bytes left after release\n";
+    std::cerr << "FAILED: " << mapper->GetStatistics()->GetGPUMemorySize()
+              << " bytes left after release\n";
     ++errors;
   }
   scene.Window->Render();

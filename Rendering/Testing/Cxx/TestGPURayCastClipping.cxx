@@ -117,8 +117,8 @@ int TestGPURayCastClipping(int argc, char* argv[])
     const auto unclipped =
       ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property, image, Size, Size);
     std::cout << clipping.Name << ": " << planes->GetNumberOfItems() << " planes, "
-              << mapper->GetNumberOfPeels() << " peels, " << check.Pixels << " pixels covered, p99 "
-              << check.P99 << " max " << check.MaxDifference
+              << mapper->GetStatistics()->GetNumberOfPeels() << " peels, " << check.Pixels
+              << " pixels covered, p99 " << check.P99 << " max " << check.MaxDifference
               << " /255; against the unclipped reference p99 " << unclipped.P99 << "; messages ["
               << messages->Warnings << messages->Errors << "]\n";
     if (check.P99 > 1.0 || check.MaxDifference > 1.0)

@@ -16,6 +16,7 @@
 namespace
 {
 using Mapper = vtkUnstructuredGridGPURayCastMapper;
+using Statistics = vtkUnstructuredGridGPURayCastStatistics;
 
 // Renders with TimePasses on; the number of errors in the counts and times.
 int CheckPassTimes(ppiray_test::Scene& scene, Mapper* mapper, int entryPasses, const char* what)
@@ -30,36 +31,36 @@ int CheckPassTimes(ppiray_test::Scene& scene, Mapper* mapper, int entryPasses, c
   const double wall = 1000.0 * timer->GetElapsedTime();
   int errors = 0;
   double sum = 0.0;
-  std::cout << what << ": frame " << wall << " ms, CPU preparation " << mapper->GetPreparationTime()
-            << " ms\n";
-  for (int k = 0; k < Mapper::NUMBER_OF_PASS_KINDS; ++k)
+  std::cout << what << ": frame " << wall << " ms, CPU preparation "
+            << mapper->GetStatistics()->GetPreparationTime() << " ms\n";
+  for (int k = 0; k < Statistics::NUMBER_OF_PASS_KINDS; ++k)
   {
-    const double ms = mapper->GetPassTime(k);
-    const int passes = mapper->GetNumberOfPasses(k);
+    const double ms = mapper->GetStatistics()->GetPassTime(k);
+    const int passes = mapper->GetStatistics()->GetNumberOfPasses(k);
     sum += ms;
-    std::cout << "  " << Mapper::GetPassKindName(k) << ": " << passes << " passes, " << ms
+    std::cout << "  " << Statistics::GetPassKindName(k) << ": " << passes << " passes, " << ms
               << " ms\n";
     if ((passes > 0) != (ms > 0.0) || ms < 0.0)
     {
-      std::cerr << what << ": " << Mapper::GetPassKindName(k) << " has " << passes << " passes and "
-                << ms << " ms\n";
+      std::cerr << what << ": " << Statistics::GetPassKindName(k) << " has " << passes
+                << " passes and " << ms << " ms\n";
       ++errors;
     }
   }
-  const int expected[Mapper::NUMBER_OF_PASS_KINDS] = { 1, 0, entryPasses, -1, -1, 1 };
-  for (int k = 0; k < Mapper::NUMBER_OF_PASS_KINDS; ++k)
+  const int expected[Statistics::NUMBER_OF_PASS_KINDS] = { 1, 0, entryPasses, -1, -1, 1 };
+  for (int k = 0; k < Statistics::NUMBER_OF_PASS_KINDS; ++k)
   {
-    if (expected[k] >= 0 && mapper->GetNumberOfPasses(k) != expected[k])
+    if (expected[k] >= 0 && mapper->GetStatistics()->GetNumberOfPasses(k) != expected[k])
     {
-      std::cerr << what << ": " << mapper->GetNumberOfPasses(k) << " " << Mapper::GetPassKindName(k)
-                << " passes, expected " << expected[k] << "\n";
+      std::cerr << what << ": " << mapper->GetStatistics()->GetNumberOfPasses(k) << " "
+                << Statistics::GetPassKindName(k) << " passes, expected " << expected[k] << "\n";
       ++errors;
     }
   }
   // A march (and a continuation check) per peel at least.
-  const int peels = mapper->GetNumberOfPeels();
-  if (mapper->GetNumberOfPasses(Mapper::MARCH_PASS) < peels ||
-      mapper->GetNumberOfPasses(Mapper::CONTINUATION_CHECK_PASS) < peels)
+  const int peels = mapper->GetStatistics()->GetNumberOfPeels();
+  if (mapper->GetStatistics()->GetNumberOfPasses(Statistics::MARCH_PASS) < peels ||
+      mapper->GetStatistics()->GetNumberOfPasses(Statistics::CONTINUATION_CHECK_PASS) < peels)
   {
     std::cerr << what << ": fewer marches or checks than the " << peels << " peels\n";
     ++errors;
@@ -72,11 +73,12 @@ int CheckPassTimes(ppiray_test::Scene& scene, Mapper* mapper, int entryPasses, c
   }
   // Off: nothing timed.
   scene.Window->Render();
-  for (int k = 0; k < Mapper::NUMBER_OF_PASS_KINDS; ++k)
+  for (int k = 0; k < Statistics::NUMBER_OF_PASS_KINDS; ++k)
   {
-    if (mapper->GetNumberOfPasses(k) != 0 || mapper->GetPassTime(k) != 0.0)
+    if (mapper->GetStatistics()->GetNumberOfPasses(k) != 0 ||
+        mapper->GetStatistics()->GetPassTime(k) != 0.0)
     {
-      std::cerr << what << ": " << Mapper::GetPassKindName(k) << " timed with TimePasses off\n";
+      std::cerr << what << ": " << Statistics::GetPassKindName(k) << " timed with TimePasses off\n";
       ++errors;
     }
   }
@@ -97,9 +99,10 @@ int TestGPURayCastConvex(int argc, char* argv[])
   scene.Window->Render();
 
   int errors = 0;
-  if (mapper->GetNumberOfPeels() != 1)
+  if (mapper->GetStatistics()->GetNumberOfPeels() != 1)
   {
-    std::cerr << "convex mesh took " << mapper->GetNumberOfPeels() << " peels, expected 1\n";
+    std::cerr << "convex mesh took " << mapper->GetStatistics()->GetNumberOfPeels()
+              << " peels, expected 1\n";
     ++errors;
   }
   const int result = ppiray_test::BaselineTest(argc, argv, scene.Window);
@@ -110,7 +113,7 @@ int TestGPURayCastConvex(int argc, char* argv[])
   vtkNew<vtkUnstructuredGridGPURayCastMapper> peeling;
   scene.Show(peeling, tunnel, { -0.9, 0.75, 0.9 }, { 0.5, 0.3, 0.3 });
   scene.Window->Render();
-  const int peels = peeling->GetNumberOfPeels();
+  const int peels = peeling->GetStatistics()->GetNumberOfPeels();
   std::cout << "tunnel and block: " << peels << " peels\n";
   if (peels < 3)
   {

@@ -122,11 +122,14 @@ int TestGPURayCastFault(int argc, char* argv[])
     scene.Window->Render();
     const auto image = ppiray_test::ReadRGB(scene.Window);
     const auto d = ppiray_test::Compare(image, reference);
-    std::cout << (mode == 0 ? "native" : "split") << ": " << mapper->GetNumberOfHexahedra()
-              << " hexahedra, " << mapper->GetNumberOfTetrahedra() << " tetrahedra, "
-              << mapper->GetNumberOfPeels() << " peels; against the reference: p99 " << d.P99
-              << " max " << d.Max << " mean " << d.Mean << " (1/255)\n";
-    if (mapper->GetNumberOfPeels() < 2 || d.P99 > p99Bound[mode] || d.Max > maxBound[mode])
+    std::cout << (mode == 0 ? "native" : "split") << ": "
+              << mapper->GetStatistics()->GetNumberOfHexahedra() << " hexahedra, "
+              << mapper->GetStatistics()->GetNumberOfTetrahedra() << " tetrahedra, "
+              << mapper->GetStatistics()->GetNumberOfPeels()
+              << " peels; against the reference: p99 " << d.P99 << " max " << d.Max << " mean "
+              << d.Mean << " (1/255)\n";
+    if (mapper->GetStatistics()->GetNumberOfPeels() < 2 || d.P99 > p99Bound[mode] ||
+        d.Max > maxBound[mode])
     {
       std::cerr << "FAILED: " << (mode == 0 ? "native" : "split")
                 << ": rays across the fault differ from the reference (or one peel only)\n";
@@ -134,7 +137,7 @@ int TestGPURayCastFault(int argc, char* argv[])
     }
     if (mode == 0)
     {
-      if (mapper->GetNumberOfHexahedra() != grid->GetNumberOfCells())
+      if (mapper->GetStatistics()->GetNumberOfHexahedra() != grid->GetNumberOfCells())
       {
         std::cerr << "FAILED: not every cell rendered natively\n";
         ++errors;

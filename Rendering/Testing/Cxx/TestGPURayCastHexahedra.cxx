@@ -234,8 +234,8 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
       e[mode] = AgainstReference(scene, exact, 200, 200);
       std::cout << "parallelepiped, " << names[mode] << ": p99 " << e[mode].P99 << " max "
                 << e[mode].Max << " mean " << e[mode].Mean << " (1/255); hexahedra "
-                << mapper->GetNumberOfHexahedra() << ", tetrahedra "
-                << mapper->GetNumberOfTetrahedra() << "\n";
+                << mapper->GetStatistics()->GetNumberOfHexahedra() << ", tetrahedra "
+                << mapper->GetStatistics()->GetNumberOfTetrahedra() << "\n";
     }
     if (e[0].P99 > 1.0 || mapper->GetHexahedronMode() != 2)
     {
@@ -257,10 +257,11 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     scene.Show(mapper, grid, { 2.0, 1.3, 2.4 }, { 0.5, 0.5, 0.5 });
     scene.Window->Render();
     const Error e = AgainstReference(scene, Reference(scene, grid, 200, 200), 200, 200);
-    std::cout << "distorted block, ACCURATE: peels " << mapper->GetNumberOfPeels() << ", p99 "
-              << e.P99 << " max " << e.Max << " mean " << e.Mean << ", GPU bytes "
-              << mapper->GetGPUMemorySize() << "\n";
-    if (mapper->GetNumberOfPeels() != 1 || mapper->GetNumberOfHexahedra() != 125)
+    std::cout << "distorted block, ACCURATE: peels " << mapper->GetStatistics()->GetNumberOfPeels()
+              << ", p99 " << e.P99 << " max " << e.Max << " mean " << e.Mean << ", GPU bytes "
+              << mapper->GetStatistics()->GetGPUMemorySize() << "\n";
+    if (mapper->GetStatistics()->GetNumberOfPeels() != 1 ||
+        mapper->GetStatistics()->GetNumberOfHexahedra() != 125)
     {
       errors += Fail("a gap between hexahedra (more than one peel) or hexahedra not native");
     }
@@ -293,10 +294,12 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     // Trilinear against piecewise linear in cells of a third of the block:
     // they differ inside every cell (about 12/255 at p99 here); a leak at the
     // pinch would show as a second peel and black holes.
-    std::cout << "pinched block natively: hexahedra " << mapper->GetNumberOfHexahedra()
-              << ", peels " << mapper->GetNumberOfPeels() << ", against the split: p99 " << d.P99
+    std::cout << "pinched block natively: hexahedra "
+              << mapper->GetStatistics()->GetNumberOfHexahedra() << ", peels "
+              << mapper->GetStatistics()->GetNumberOfPeels() << ", against the split: p99 " << d.P99
               << " max " << d.Max << "\n";
-    if (mapper->GetNumberOfHexahedra() != 27 || mapper->GetNumberOfPeels() != 1 || d.P99 > 16.0)
+    if (mapper->GetStatistics()->GetNumberOfHexahedra() != 27 ||
+        mapper->GetStatistics()->GetNumberOfPeels() != 1 || d.P99 > 16.0)
     {
       errors += Fail("pinched block natively");
     }
@@ -320,10 +323,12 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     grid->GetPoints()->SetPoint(PointId(grid, 0, 0, 0), x);
     grid->GetPoints()->Modified();
     const auto d0 = NativeAgainstSplit(scene, mapper);
-    std::cout << "collapsed at corner 0: hexahedra " << mapper->GetNumberOfHexahedra() << ", peels "
-              << mapper->GetNumberOfPeels() << ", against the split: p99 " << d0.P99 << " max "
-              << d0.Max << "\n";
-    if (mapper->GetNumberOfHexahedra() != 27 || mapper->GetNumberOfPeels() != 1 || d0.P99 > 16.0)
+    std::cout << "collapsed at corner 0: hexahedra "
+              << mapper->GetStatistics()->GetNumberOfHexahedra() << ", peels "
+              << mapper->GetStatistics()->GetNumberOfPeels() << ", against the split: p99 "
+              << d0.P99 << " max " << d0.Max << "\n";
+    if (mapper->GetStatistics()->GetNumberOfHexahedra() != 27 ||
+        mapper->GetStatistics()->GetNumberOfPeels() != 1 || d0.P99 > 16.0)
     {
       errors += Fail("a hexahedron collapsed at corner 0");
     }
@@ -353,11 +358,12 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     grid->GetPoints()->Modified();
     messages->Warnings.clear();
     const auto flat = NativeAgainstSplit(scene, mapper);
-    std::cout << "flattened layer: hexahedra " << mapper->GetNumberOfHexahedra() << ", peels "
-              << mapper->GetNumberOfPeels() << ", against the split: p99 " << flat.P99 << " max "
-              << flat.Max << "\n";
+    std::cout << "flattened layer: hexahedra " << mapper->GetStatistics()->GetNumberOfHexahedra()
+              << ", peels " << mapper->GetStatistics()->GetNumberOfPeels()
+              << ", against the split: p99 " << flat.P99 << " max " << flat.Max << "\n";
     if (messages->Warnings.find("9 zero-volume hexahedra skipped") == std::string::npos ||
-        mapper->GetNumberOfHexahedra() != 18 || mapper->GetNumberOfPeels() != 1 || flat.P99 > 16.0)
+        mapper->GetStatistics()->GetNumberOfHexahedra() != 18 ||
+        mapper->GetStatistics()->GetNumberOfPeels() != 1 || flat.P99 > 16.0)
     {
       errors += Fail("a flattened layer: expected 9 cells skipped with a warning, 18 native");
     }
@@ -399,10 +405,11 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     scene.Show(mapper, grid, { 2.5, -1.5, 0.4 }, { 0.5, 0.5, 0.75 });
     const auto d = NativeAgainstSplit(scene, mapper);
     const std::string what = cells == 1 ? "pyramid as a hexahedron" : "pyramid under a hexahedron";
-    std::cout << what << ": hexahedra " << mapper->GetNumberOfHexahedra() << ", peels "
-              << mapper->GetNumberOfPeels() << ", against the split: p99 " << d.P99 << " max "
-              << d.Max << "\n";
-    if (mapper->GetNumberOfHexahedra() != cells || mapper->GetNumberOfPeels() != 1 || d.Max > 2.0)
+    std::cout << what << ": hexahedra " << mapper->GetStatistics()->GetNumberOfHexahedra()
+              << ", peels " << mapper->GetStatistics()->GetNumberOfPeels()
+              << ", against the split: p99 " << d.P99 << " max " << d.Max << "\n";
+    if (mapper->GetStatistics()->GetNumberOfHexahedra() != cells ||
+        mapper->GetStatistics()->GetNumberOfPeels() != 1 || d.Max > 2.0)
     {
       errors += Fail(what + ": its volume differs from the split");
     }
@@ -449,9 +456,10 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     scene.Renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
     scene.Renderer->ResetCamera();
     const auto d = NativeAgainstSplit(scene, mapper);
-    std::cout << "folded face at a grazing angle: hexahedra " << mapper->GetNumberOfHexahedra()
-              << ", against the split: p99 " << d.P99 << " max " << d.Max << "\n";
-    if (mapper->GetNumberOfHexahedra() != 2 || d.Max > 2.0)
+    std::cout << "folded face at a grazing angle: hexahedra "
+              << mapper->GetStatistics()->GetNumberOfHexahedra() << ", against the split: p99 "
+              << d.P99 << " max " << d.Max << "\n";
+    if (mapper->GetStatistics()->GetNumberOfHexahedra() != 2 || d.Max > 2.0)
     {
       errors += Fail("a folded face at a grazing angle: stretches charged to the wrong cell");
     }
@@ -474,10 +482,12 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     scene.Window->Render();
     const auto check = ppiray_test::CheckPixels(
       scene.Renderer, grid, scene.Property, ppiray_test::ReadRGB(scene.Window), 120, 120);
-    std::cout << "folded layer: hexahedra " << mapper->GetNumberOfHexahedra() << ", peels "
-              << mapper->GetNumberOfPeels() << ", against the reference: ";
+    std::cout << "folded layer: hexahedra " << mapper->GetStatistics()->GetNumberOfHexahedra()
+              << ", peels " << mapper->GetStatistics()->GetNumberOfPeels()
+              << ", against the reference: ";
     errors += ppiray_test::ExpectCoverage(check, 5000);
-    if (mapper->GetNumberOfHexahedra() != 216 || check.P99 > 1.0 || check.MaxDifference > 2.0)
+    if (mapper->GetStatistics()->GetNumberOfHexahedra() != 216 || check.P99 > 1.0 ||
+        check.MaxDifference > 2.0)
     {
       errors += Fail("a folded layer of hexahedra, against the reference");
     }
@@ -532,7 +542,7 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     scene.Show(mapper, voxels, { 2.0, 1.3, 2.4 }, { 0.5, 0.5, 0.5 });
     scene.Window->Render();
     const auto a = ppiray_test::ReadRGB(scene.Window);
-    const vtkIdType native = mapper->GetNumberOfHexahedra();
+    const vtkIdType native = mapper->GetStatistics()->GetNumberOfHexahedra();
     mapper->SetInputData(hexahedra);
     scene.Window->Render();
     const auto b = ppiray_test::ReadRGB(scene.Window);
@@ -551,11 +561,12 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     mapper->AddObserver(vtkCommand::WarningEvent, messages);
     mapper->SetInputData(mixed);
     scene.Window->Render();
-    std::cout << "mixed: native cells " << mapper->GetNumberOfNativeCells() << ", hexahedra "
-              << mapper->GetNumberOfHexahedra() << ", tetrahedra "
-              << mapper->GetNumberOfTetrahedra() << "\n";
-    if (mapper->GetNumberOfNativeCells() != 64 + 1 || mapper->GetNumberOfHexahedra() != 64 ||
-        mapper->GetNumberOfTetrahedra() != 0 || !messages->Warnings.empty())
+    std::cout << "mixed: native cells " << mapper->GetStatistics()->GetNumberOfNativeCells()
+              << ", hexahedra " << mapper->GetStatistics()->GetNumberOfHexahedra()
+              << ", tetrahedra " << mapper->GetStatistics()->GetNumberOfTetrahedra() << "\n";
+    if (mapper->GetStatistics()->GetNumberOfNativeCells() != 64 + 1 ||
+        mapper->GetStatistics()->GetNumberOfHexahedra() != 64 ||
+        mapper->GetStatistics()->GetNumberOfTetrahedra() != 0 || !messages->Warnings.empty())
     {
       errors += Fail("a mesh of hexahedra and a tetrahedron is not marched natively");
     }
@@ -565,9 +576,11 @@ int TestGPURayCastHexahedra(int argc, char* argv[])
     withTriangle->InsertNextCell(VTK_TRIANGLE, 3, triangle);
     mapper->SetInputData(withTriangle);
     scene.Window->Render();
-    std::cout << "with a triangle: native cells " << mapper->GetNumberOfNativeCells()
-              << ", tetrahedra " << mapper->GetNumberOfTetrahedra() << "\n";
-    if (mapper->GetNumberOfNativeCells() != 0 || mapper->GetNumberOfTetrahedra() != 6 * 64 + 1 ||
+    std::cout << "with a triangle: native cells "
+              << mapper->GetStatistics()->GetNumberOfNativeCells() << ", tetrahedra "
+              << mapper->GetStatistics()->GetNumberOfTetrahedra() << "\n";
+    if (mapper->GetStatistics()->GetNumberOfNativeCells() != 0 ||
+        mapper->GetStatistics()->GetNumberOfTetrahedra() != 6 * 64 + 1 ||
         messages->Warnings.find("1 other cells") == std::string::npos)
     {
       errors += Fail("a mesh with a triangle did not fall back to tetrahedra with a warning");

@@ -123,16 +123,17 @@ int TestGPURayCastInside(int argc, char* argv[])
     const auto check =
       ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property, image, Size, Size);
     std::cout << inside.Name << ": " << grid->GetNumberOfCells() << " cells, "
-              << mapper->GetNumberOfPeels() << " peels, " << check.Pixels << " pixels covered, p99 "
-              << check.P99 << " max " << check.MaxDifference << " /255; messages ["
-              << messages->Warnings << messages->Errors << "]\n";
+              << mapper->GetStatistics()->GetNumberOfPeels() << " peels, " << check.Pixels
+              << " pixels covered, p99 " << check.P99 << " max " << check.MaxDifference
+              << " /255; messages [" << messages->Warnings << messages->Errors << "]\n";
     if (check.P99 > 1.0 || check.MaxDifference > 1.0)
     {
       std::cout << "FAILED: " << inside.Name << " differs from the reference\n";
       ++errors;
     }
     errors += ppiray_test::ExpectCoverage(check, Size * Size);
-    if (inside.Hexahedra && mapper->GetNumberOfHexahedra() != grid->GetNumberOfCells())
+    if (inside.Hexahedra &&
+        mapper->GetStatistics()->GetNumberOfHexahedra() != grid->GetNumberOfCells())
     {
       std::cout << "FAILED: " << inside.Name << ": not rendered as native hexahedra\n";
       ++errors;

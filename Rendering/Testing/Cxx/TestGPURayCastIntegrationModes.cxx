@@ -64,7 +64,8 @@ int TestGPURayCastIntegrationModes(int, char*[])
                 << " p99 " << d.P99 << " max " << d.Max;
       if (mode == vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION)
       {
-        std::cout << " (table built in " << mapper->GetPreIntegrationTableBuildTime() << " s)";
+        std::cout << " (table built in "
+                  << mapper->GetStatistics()->GetPreIntegrationTableBuildTime() << " s)";
       }
       std::cout << "\n";
       bool ok = true;
@@ -87,7 +88,8 @@ int TestGPURayCastIntegrationModes(int, char*[])
         ++errors;
       }
     }
-    if (mapper->GetGeometryUploadCount() != 1 || mapper->GetFieldUploadCount() != 1)
+    if (mapper->GetStatistics()->GetGeometryUploadCount() != 1 ||
+        mapper->GetStatistics()->GetFieldUploadCount() != 1)
     {
       std::cerr << "FAILED: switching modes re-uploaded cell data\n";
       ++errors;

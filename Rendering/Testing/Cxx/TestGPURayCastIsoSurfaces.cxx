@@ -300,7 +300,7 @@ int TestGPURayCastIsoSurfaces(int argc, char* argv[])
   hexMapper->SetBlendModeToIsoSurface();
   const Result hexIso = RenderAndCompare(hexMapper, hexes, false);
   Report("hexahedra natively, surfaces", hexIso.Error);
-  if (hexMapper->GetNumberOfHexahedra() != 216)
+  if (hexMapper->GetStatistics()->GetNumberOfHexahedra() != 216)
   {
     errors += Fail("hexahedra not rendered natively");
   }

@@ -65,20 +65,20 @@ int TestGPURayCastLevelOfDetail(int, char*[])
   mapper->AutoAdjustSampleDistancesOff();
   mapper->SetImageSampleDistance(1.0f);
   const auto full = render();
-  const vtkIdType fullBytes = mapper->GetGPUMemorySize();
+  const vtkIdType fullBytes = mapper->GetStatistics()->GetGPUMemorySize();
   std::printf("automatic distance %.2f, image %s the fixed distance 1's; %d pixels covered, "
               "%lld GPU bytes, %d peels\n",
     automaticDistance, automaticAgain == full ? "identical to" : "DIFFERENT from", covered(full),
-    static_cast<long long>(fullBytes), mapper->GetNumberOfPeels());
+    static_cast<long long>(fullBytes), mapper->GetStatistics()->GetNumberOfPeels());
   fail(automaticDistance != 1.0f || automaticAgain != full || automatic != full,
     "with time to spare the automatic level of detail is not every pixel");
   fail(covered(full) < size * size / 10, "the scene covers too few pixels");
-  fail(mapper->GetNumberOfPeels() < 2, "the scene is meant to need several peels");
+  fail(mapper->GetStatistics()->GetNumberOfPeels() < 2, "the scene is meant to need several peels");
 
   // A fixed distance of 4.
   mapper->SetImageSampleDistance(4.0f);
   const auto coarse = render();
-  const vtkIdType coarseBytes = mapper->GetGPUMemorySize();
+  const vtkIdType coarseBytes = mapper->GetStatistics()->GetGPUMemorySize();
   std::vector<int> differences;
   int largest = 0;
   for (size_t i = 0; i < full.size(); ++i)

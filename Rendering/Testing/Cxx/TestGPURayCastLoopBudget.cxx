@@ -117,8 +117,9 @@ int Check(const std::string& name, vtkUnstructuredGrid* grid,
   std::sort(d.begin(), d.end());
   const double p99 = d.empty() ? 0.0 : d[static_cast<size_t>(0.99 * (d.size() - 1))];
   const double max = d.empty() ? 0.0 : d.back();
-  std::cout << name << ": " << mapper->GetNumberOfContinuations() << " continuations, " << covered
-            << " pixels covered, p99 " << p99 << ", max " << max << " /255\n";
+  std::cout << name << ": " << mapper->GetStatistics()->GetNumberOfContinuations()
+            << " continuations, " << covered << " pixels covered, p99 " << p99 << ", max " << max
+            << " /255\n";
   int errors = 0;
   // Bounds: both rounded to 8 bits (1) plus float rounding over thousands of
   // pieces per ray; a ray cut short is tens of levels dark.
@@ -132,14 +133,14 @@ int Check(const std::string& name, vtkUnstructuredGrid* grid,
     std::cerr << name << ": only " << covered << " pixels covered\n";
     ++errors;
   }
-  if (continuations > 0 && mapper->GetNumberOfContinuations() == 0)
+  if (continuations > 0 && mapper->GetStatistics()->GetNumberOfContinuations() == 0)
   {
     std::cerr << name << ": no continuation pass; the scene no longer exceeds the budget\n";
     ++errors;
   }
-  if (continuations < 0 && mapper->GetNumberOfContinuations() > 0)
+  if (continuations < 0 && mapper->GetStatistics()->GetNumberOfContinuations() > 0)
   {
-    std::cerr << name << ": " << mapper->GetNumberOfContinuations()
+    std::cerr << name << ": " << mapper->GetStatistics()->GetNumberOfContinuations()
               << " continuation passes; transparent spans were split at control points\n";
     ++errors;
   }

@@ -113,8 +113,8 @@ int TestGPURayCastMixedCells(int argc, char* argv[])
   mapper->SetHexahedronModeToSubdivide(); // the split path, also for the voxels below
   scene.Show(mapper, grid, { 2.0, 1.3, 2.4 }, { 0.5, 0.5, 0.5 });
   scene.Window->Render();
-  std::cout << "peels " << mapper->GetNumberOfPeels() << "\n";
-  if (mapper->GetNumberOfPeels() != 1)
+  std::cout << "peels " << mapper->GetStatistics()->GetNumberOfPeels() << "\n";
+  if (mapper->GetStatistics()->GetNumberOfPeels() != 1)
   {
     errors += Fail("a convex block needed more than one peel");
   }
@@ -143,7 +143,7 @@ int TestGPURayCastMixedCells(int argc, char* argv[])
   mapper->SetInputData(voxels);
   scene.Window->Render();
   const auto voxelImage = ppiray_test::ReadRGB(scene.Window);
-  const vtkIdType voxelTets = mapper->GetNumberOfTetrahedra();
+  const vtkIdType voxelTets = mapper->GetStatistics()->GetNumberOfTetrahedra();
   mapper->SetInputData(hexahedra);
   scene.Window->Render();
   const auto hexImage = ppiray_test::ReadRGB(scene.Window);

@@ -101,12 +101,12 @@ int Expect(const char* what, ppiray_test::Scene& scene, vtkUnstructuredGridGPURa
   const auto image = ppiray_test::ReadRGB(scene.Window);
   const auto check =
     ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property, image, Size, Size, cellArray);
-  std::cout << what << ": native cells " << mapper->GetNumberOfNativeCells() << ", peels "
-            << mapper->GetNumberOfPeels() << ", ";
+  std::cout << what << ": native cells " << mapper->GetStatistics()->GetNumberOfNativeCells()
+            << ", peels " << mapper->GetStatistics()->GetNumberOfPeels() << ", ";
   int errors = ppiray_test::ExpectCoverage(check, 10000);
   const bool split = mode == vtkUnstructuredGridGPURayCastMapper::HEXAHEDRON_SUBDIVIDE;
-  if (mapper->GetNumberOfPeels() != 1 ||
-      mapper->GetNumberOfNativeCells() != (split ? 0 : grid->GetNumberOfCells()))
+  if (mapper->GetStatistics()->GetNumberOfPeels() != 1 ||
+      mapper->GetStatistics()->GetNumberOfNativeCells() != (split ? 0 : grid->GetNumberOfCells()))
   {
     errors += Fail("not one peel, or not every cell native");
   }

@@ -28,10 +28,11 @@ int TestGPURayCastNonConvex(int argc, char* argv[])
   scene.Window->Render();
 
   int errors = 0;
-  std::cout << "peels: " << mapper->GetNumberOfPeels() << "\n";
-  if (mapper->GetNumberOfPeels() < 3)
+  std::cout << "peels: " << mapper->GetStatistics()->GetNumberOfPeels() << "\n";
+  if (mapper->GetStatistics()->GetNumberOfPeels() < 3)
   {
-    std::cerr << "expected at least 3 peels, got " << mapper->GetNumberOfPeels() << "\n";
+    std::cerr << "expected at least 3 peels, got " << mapper->GetStatistics()->GetNumberOfPeels()
+              << "\n";
     ++errors;
   }
   const auto image = ppiray_test::ReadRGB(scene.Window);

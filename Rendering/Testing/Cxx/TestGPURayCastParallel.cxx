@@ -31,8 +31,8 @@ int TestGPURayCastParallel(int argc, char* argv[])
   const auto image = ppiray_test::ReadRGB(scene.Window);
   const auto check =
     ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property, image, 300, 300);
-  std::cout << "peels " << mapper->GetNumberOfPeels() << ", pixels checked " << check.Pixels
-            << ", max difference " << check.MaxDifference << "/255\n";
+  std::cout << "peels " << mapper->GetStatistics()->GetNumberOfPeels() << ", pixels checked "
+            << check.Pixels << ", max difference " << check.MaxDifference << "/255\n";
   // 8-bit rounding 0.5, float and the 0.1/255 transfer-function tolerance
   if (check.MaxDifference > 1.0)
   {

@@ -206,10 +206,11 @@ int Expect(const char* what, ppiray_test::Scene& scene, vtkUnstructuredGridGPURa
   const auto image = ppiray_test::ReadRGB(scene.Window);
   const auto check =
     ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property, image, size, size);
-  std::cout << what << ": tetrahedra " << mapper->GetNumberOfTetrahedra() << ", peels "
-            << mapper->GetNumberOfPeels() << ", ";
+  std::cout << what << ": tetrahedra " << mapper->GetStatistics()->GetNumberOfTetrahedra()
+            << ", peels " << mapper->GetStatistics()->GetNumberOfPeels() << ", ";
   int errors = ppiray_test::ExpectCoverage(check, size * size / 6);
-  if (mapper->GetNumberOfPeels() > peels || mapper->GetNumberOfTetrahedra() == 0)
+  if (mapper->GetStatistics()->GetNumberOfPeels() > peels ||
+      mapper->GetStatistics()->GetNumberOfTetrahedra() == 0)
   {
     errors += Fail("more peels than the boundary needs (the split does not conform), or nothing "
                    "rendered");

@@ -374,10 +374,10 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     const auto image = ppiray_test::ReadRGB(scene.Window);
     save(name + "-gpu", image, Size);
     std::cout << name << ": " << grid->GetNumberOfCells() << " cells, "
-              << mapper->GetNumberOfHexahedra() << " native hexahedra, "
-              << mapper->GetNumberOfPeels() << " peels, one render " << seconds << " s (" << Size
-              << "x" << Size << ")\n";
-    if (mapper->GetNumberOfHexahedra() != grid->GetNumberOfCells())
+              << mapper->GetStatistics()->GetNumberOfHexahedra() << " native hexahedra, "
+              << mapper->GetStatistics()->GetNumberOfPeels() << " peels, one render " << seconds
+              << " s (" << Size << "x" << Size << ")\n";
+    if (mapper->GetStatistics()->GetNumberOfHexahedra() != grid->GetNumberOfCells())
     {
       errors += Fail(name + ": not every cell rendered as a native hexahedron");
     }
@@ -413,12 +413,13 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     save(name + "-part-reference", AsRGB(exact), ReferenceSize);
     const auto e = ppiray_test::AgainstReference(image, exact);
     std::cout << name << " part against the reference: " << part->GetNumberOfCells() << " cells ("
-              << CollapsedCells(part) << " collapsed), " << mapper->GetNumberOfHexahedra()
-              << " native, " << mapper->GetNumberOfPeels() << " peels, " << ReferenceSize << "x"
+              << CollapsedCells(part) << " collapsed), "
+              << mapper->GetStatistics()->GetNumberOfHexahedra() << " native, "
+              << mapper->GetStatistics()->GetNumberOfPeels() << " peels, " << ReferenceSize << "x"
               << ReferenceSize << ", reference " << seconds << " s: p99 " << e.P99 << " p99.9 "
               << e.P999 << " max " << e.Max << " mean " << e.Mean << " (1/255)\n";
-    if (mapper->GetNumberOfHexahedra() != part->GetNumberOfCells() || e.P99 > P99Bound ||
-        e.P999 > P999Bound)
+    if (mapper->GetStatistics()->GetNumberOfHexahedra() != part->GetNumberOfCells() ||
+        e.P99 > P99Bound || e.P999 > P999Bound)
     {
       errors +=
         Fail(name + ": part not native, or p99 or p99.9 against the reference above the bound");
@@ -552,7 +553,7 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     scene.Renderer->GetActiveCamera()->Zoom(real.Zoom);
     check(real.Name, grid, scene, mapper);
     std::cout << real.Name << " warnings: [" << messages->Warnings << messages->Errors << "]\n";
-    if (mapper->GetNumberOfPeels() < real.MinimumPeels)
+    if (mapper->GetStatistics()->GetNumberOfPeels() < real.MinimumPeels)
     {
       errors += Fail(std::string(real.Name) + ": fewer peels than the mesh's holes need");
     }
@@ -595,11 +596,12 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     scene.Window->Render();
     const auto wholeImage = ppiray_test::ReadRGB(scene.Window);
     std::cout << "UNISIM whole mesh: " << whole->GetNumberOfCells() << " cells ("
-              << CollapsedCells(whole) << " collapsed), " << mapper->GetNumberOfHexahedra()
-              << " native hexahedra, " << mapper->GetNumberOfTetrahedra() << " tetrahedra, "
-              << mapper->GetNumberOfPeels() << " peels; warnings: [" << messages->Warnings
-              << messages->Errors << "]\n";
-    if (mapper->GetNumberOfHexahedra() != 46641 ||
+              << CollapsedCells(whole) << " collapsed), "
+              << mapper->GetStatistics()->GetNumberOfHexahedra() << " native hexahedra, "
+              << mapper->GetStatistics()->GetNumberOfTetrahedra() << " tetrahedra, "
+              << mapper->GetStatistics()->GetNumberOfPeels() << " peels; warnings: ["
+              << messages->Warnings << messages->Errors << "]\n";
+    if (mapper->GetStatistics()->GetNumberOfHexahedra() != 46641 ||
         messages->Warnings.find("969 zero-volume hexahedra skipped") == std::string::npos)
     {
       errors += Fail("UNISIM: expected the 969 flat hexahedra skipped, 46641 native");
@@ -623,11 +625,11 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     const auto d = ppiray_test::Compare(native, split);
     const auto f = ppiray_test::Compare(wholeImage, native);
     const int coverage[2] = { Coverage(native), Coverage(split) };
-    std::cout << "UNISIM against SUBDIVIDE (" << mapper->GetNumberOfTetrahedra() << " tetrahedra, "
-              << mapper->GetNumberOfPeels() << " peels, one render " << seconds << " s): p99 "
-              << d.P99 << " max " << d.Max << " mean " << d.Mean << ", "
-              << PixelsDiffering(native, split, 2) << " pixels more than 2/255 apart; coverage "
-              << coverage[0] << " and " << coverage[1]
+    std::cout << "UNISIM against SUBDIVIDE (" << mapper->GetStatistics()->GetNumberOfTetrahedra()
+              << " tetrahedra, " << mapper->GetStatistics()->GetNumberOfPeels()
+              << " peels, one render " << seconds << " s): p99 " << d.P99 << " max " << d.Max
+              << " mean " << d.Mean << ", " << PixelsDiffering(native, split, 2)
+              << " pixels more than 2/255 apart; coverage " << coverage[0] << " and " << coverage[1]
               << " pixels; whole mesh against the mesh without its flat cells: max " << f.Max
               << "; warnings: [" << messages->Warnings << messages->Errors << "]\n";
     // Linear depth is exact on both: they may differ only where the

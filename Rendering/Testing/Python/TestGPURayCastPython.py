@@ -66,13 +66,13 @@ def main(baseline, temporary):
     window.Render()
 
     failures = []
-    tets = mapper.GetNumberOfTetrahedra()
+    tets = mapper.GetStatistics().GetNumberOfTetrahedra()
     if tets != 5 * 20 ** 3:
         failures.append("expected 40000 tetrahedra, got %d" % tets)
-    if mapper.GetGPUMemorySize() < 96 * tets:
-        failures.append("GPU memory %d below 96 B/tet" % mapper.GetGPUMemorySize())
-    if mapper.GetNumberOfPeels() != 1:
-        failures.append("convex mesh took %d peels" % mapper.GetNumberOfPeels())
+    if mapper.GetStatistics().GetGPUMemorySize() < 96 * tets:
+        failures.append("GPU memory %d below 96 B/tet" % mapper.GetStatistics().GetGPUMemorySize())
+    if mapper.GetStatistics().GetNumberOfPeels() != 1:
+        failures.append("convex mesh took %d peels" % mapper.GetStatistics().GetNumberOfPeels())
 
     grab = vtkWindowToImageFilter()
     grab.SetInput(window)

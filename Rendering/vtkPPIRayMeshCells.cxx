@@ -1,0 +1,100 @@
+#include "vtkPPIRayMeshCells.h"
+
+#include "ppirayLinearCellKinds.h"
+#include "ppirayMapperModes.h"
+#include "vtkCellArray.h"
+#include "vtkPPIRayGridInput.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+
+//------------------------------------------------------------------------------
+vtkPPIRayMeshCells::Status vtkPPIRayMeshCells::Update(vtkUnstructuredGridBase* input, bool native,
+  int layout, vtkPPIRayGridInput& grid, vtkWindow* window, vtkObject* reporter)
+{
+  auto* unstructured = vtkUnstructuredGrid::SafeDownCast(input);
+  vtkMTimeType sourceTime = input->GetPoints() ? input->GetPoints()->GetMTime() : 0;
+  sourceTime = std::max(sourceTime, unstructured && unstructured->GetCells()
+                                      ? unstructured->GetCells()->GetMTime()
+                                      : input->GetMTime());
+  if (this->Input == input && sourceTime <= this->Time.GetMTime() && this->BuiltNative == native &&
+      this->BuiltLayout == layout)
+  {
+    return this->Valid ? Status::Current : Status::Failed;
+  }
+  this->Input = input;
+  this->BuiltNative = native;
+  this->BuiltLayout = layout;
+  this->Time.Modified();
+  this->Valid = false;
+  vtkUnstructuredGrid* valid = grid.Validated(input, reporter);
+  if (!valid)
+  {
+    return Status::Failed;
+  }
+  // Natively when the mode asks for it and the mesh allows it, else tetrahedra.
+  using Result = vtkPPIRayCellBuffers::BuildResult;
+  vtkPPIRayCellBuffers* buffers = &this->Native;
+  Result result = native ? this->Native.BuildGeometry(valid, reporter) : Result::Declined;
+  if (result == Result::Declined)
+  {
+    buffers = &this->Tetrahedra;
+    this->Tetrahedra.SetLayout(layout == ppiray::TetrahedronCompact
+                                 ? vtkTetrahedralCellTextures::COMPACT
+                                 : vtkTetrahedralCellTextures::PLANES);
+    result = this->Tetrahedra.BuildGeometry(valid, reporter);
+  }
+  if (this->Buffers && this->Buffers != buffers)
+  {
+    this->Buffers->ReleaseGraphicsResources(window);
+  }
+  this->Buffers = buffers;
+  this->Valid = result == Result::Built;
+  return this->Valid ? Status::Rebuilt : Status::Failed;
+}
+
+//------------------------------------------------------------------------------
+vtkTetrahedralCellTextures* vtkPPIRayMeshCells::GetTetrahedralTextures()
+{
+  return this->Buffers == &this->Tetrahedra ? this->Tetrahedra.GetTextures() : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkPPIRayMeshCells::GetNumberOfTetrahedra() const
+{
+  return this->Buffers == &this->Tetrahedra ? this->Tetrahedra.GetNumberOfTetrahedra() : 0;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkPPIRayMeshCells::GetNumberOfHexahedra() const
+{
+  return this->Buffers == &this->Native
+           ? this->Native.GetNumberOfCellsOfKind(ppiray::HEXAHEDRON_KIND)
+           : 0;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkPPIRayMeshCells::GetNumberOfNativeCells() const
+{
+  return this->Buffers == &this->Native ? this->Native.GetNumberOfCells() : 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkPPIRayMeshCells::GetGeometryUploadCount() const
+{
+  return this->Tetrahedra.GetGeometryUploadCount() + this->Native.GetGeometryUploadCount();
+}
+
+//------------------------------------------------------------------------------
+int vtkPPIRayMeshCells::GetFieldUploadCount() const
+{
+  return this->Tetrahedra.GetFieldUploadCount() + this->Native.GetFieldUploadCount();
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayMeshCells::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Tetrahedra.ReleaseGraphicsResources(window);
+  this->Native.ReleaseGraphicsResources(window);
+}

@@ -1,0 +1,75 @@
+/**
+ * @class   vtkPPIRayMeshCells
+ * @brief   the cells a mesh is rendered as: natively, or split into tetrahedra
+ *
+ * Chooses and keeps the cell buffers of a grid: its linear cells marched
+ * natively when the mode asks for it and the mesh allows it
+ * (vtkPPIRayHexahedralCellBuffers), else every cell split into tetrahedra
+ * in the chosen layout (vtkPPIRayTetrahedralCellBuffers). Rebuilt when the
+ * grid's points or cells, or the modes, change. Internal to
+ * PPIRay::Rendering.
+ */
+#ifndef vtkPPIRayMeshCells_h
+#define vtkPPIRayMeshCells_h
+
+#include "vtkPPIRayHexahedralCellBuffers.h"
+#include "vtkPPIRayTetrahedralCellBuffers.h"
+#include "vtkTimeStamp.h" // for vtkTimeStamp
+
+class vtkObject;
+class vtkPPIRayGridInput;
+class vtkUnstructuredGridBase;
+class vtkWindow;
+
+class vtkPPIRayMeshCells
+{
+public:
+  vtkPPIRayMeshCells() = default;
+
+  enum class Status
+  {
+    Current, // as last built (and valid)
+    Rebuilt, // built anew from the grid
+    Failed   // nothing to render (reported)
+  };
+  /**
+   * The cells of `input` (validated by `grid`): natively when `native` and
+   * the mesh allows it, else as tetrahedra in `layout` (ppiray::TetrahedronLayout).
+   * The buffers no longer used release their GL objects in `window`.
+   */
+  Status Update(vtkUnstructuredGridBase* input, bool native, int layout, vtkPPIRayGridInput& grid,
+    vtkWindow* window, vtkObject* reporter);
+
+  /** The buffers the mesh is rendered with (null before the first Update()). */
+  vtkPPIRayCellBuffers* GetBuffers() const { return this->Buffers; }
+  /** When the cells were last built. */
+  vtkMTimeType GetMTime() const { return this->Time.GetMTime(); }
+
+  ///@{
+  /** What the last build made, for the mapper's statistics. */
+  vtkIdType GetNumberOfTetrahedra() const;
+  vtkIdType GetNumberOfHexahedra() const;
+  vtkIdType GetNumberOfNativeCells() const;
+  // The split cells' textures (boundary face links), or null when native.
+  vtkTetrahedralCellTextures* GetTetrahedralTextures();
+  int GetGeometryUploadCount() const;
+  int GetFieldUploadCount() const;
+  ///@}
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkPPIRayMeshCells(const vtkPPIRayMeshCells&) = delete;
+  void operator=(const vtkPPIRayMeshCells&) = delete;
+
+  vtkPPIRayTetrahedralCellBuffers Tetrahedra;
+  vtkPPIRayHexahedralCellBuffers Native;
+  vtkPPIRayCellBuffers* Buffers = nullptr; // the kind the mesh is rendered as
+  vtkUnstructuredGridBase* Input = nullptr;
+  vtkTimeStamp Time;
+  bool BuiltNative = false; // built with the native modes
+  int BuiltLayout = 0;      // the tetrahedron layout built
+  bool Valid = false;
+};
+
+#endif

@@ -1,0 +1,63 @@
+#include "vtkUnstructuredGridGPURayCastStatistics.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkPPIRayPassTimes.h"
+
+vtkStandardNewMacro(vtkUnstructuredGridGPURayCastStatistics);
+
+static_assert(
+  int(vtkUnstructuredGridGPURayCastStatistics::SETUP_PASS) == vtkPPIRayPassTimes::Setup &&
+    int(vtkUnstructuredGridGPURayCastStatistics::NEAR_PLANE_ENTRY_PASS) ==
+      vtkPPIRayPassTimes::NearPlaneEntry &&
+    int(vtkUnstructuredGridGPURayCastStatistics::ENTRY_PASS) == vtkPPIRayPassTimes::Entry &&
+    int(vtkUnstructuredGridGPURayCastStatistics::MARCH_PASS) == vtkPPIRayPassTimes::March &&
+    int(vtkUnstructuredGridGPURayCastStatistics::CONTINUATION_CHECK_PASS) ==
+      vtkPPIRayPassTimes::ContinuationCheck &&
+    int(vtkUnstructuredGridGPURayCastStatistics::COMPOSITE_PASS) == vtkPPIRayPassTimes::Composite &&
+    int(vtkUnstructuredGridGPURayCastStatistics::NUMBER_OF_PASS_KINDS) ==
+      vtkPPIRayPassTimes::NumberOfPasses,
+  "one set of pass kinds");
+
+//------------------------------------------------------------------------------
+double vtkUnstructuredGridGPURayCastStatistics::GetPassTime(int kind)
+{
+  return kind >= 0 && kind < NUMBER_OF_PASS_KINDS ? this->PassTimes[kind] : 0.0;
+}
+
+//------------------------------------------------------------------------------
+int vtkUnstructuredGridGPURayCastStatistics::GetNumberOfPasses(int kind)
+{
+  return kind >= 0 && kind < NUMBER_OF_PASS_KINDS ? this->PassCounts[kind] : 0;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkUnstructuredGridGPURayCastStatistics::GetPassKindName(int kind)
+{
+  return vtkPPIRayPassTimes::GetName(kind);
+}
+
+//------------------------------------------------------------------------------
+void vtkUnstructuredGridGPURayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
+  os << indent << "NumberOfHexahedra: " << this->NumberOfHexahedra << "\n";
+  os << indent << "NumberOfNativeCells: " << this->NumberOfNativeCells << "\n";
+  os << indent << "NumberOfLinkedBoundaryFaces: " << this->NumberOfLinkedBoundaryFaces << "\n";
+  os << indent << "NumberOfSplitBoundaryFaces: " << this->NumberOfSplitBoundaryFaces << "\n";
+  os << indent << "NumberOfUnlinkedBoundaryFaces: " << this->NumberOfUnlinkedBoundaryFaces << "\n";
+  os << indent << "GeometryUploadCount: " << this->GeometryUploadCount << "\n";
+  os << indent << "FieldUploadCount: " << this->FieldUploadCount << "\n";
+  os << indent << "TransferFunctionUploadCount: " << this->TransferFunctionUploadCount << "\n";
+  os << indent << "PreIntegrationTableBuildTime: " << this->PreIntegrationTableBuildTime << "\n";
+  os << indent << "GPUMemorySize: " << this->GPUMemorySize << "\n";
+  os << indent << "NumberOfPeels: " << this->NumberOfPeels << "\n";
+  os << indent << "NumberOfContinuations: " << this->NumberOfContinuations << "\n";
+  os << indent << "NumberOfCellSteps: " << this->NumberOfCellSteps << "\n";
+  os << indent << "PreparationTime: " << this->PreparationTime << "\n";
+  for (int kind = 0; kind < NUMBER_OF_PASS_KINDS; ++kind)
+  {
+    os << indent << GetPassKindName(kind) << ": " << this->PassCounts[kind] << " passes, "
+       << this->PassTimes[kind] << " ms\n";
+  }
+}

@@ -1,0 +1,153 @@
+/**
+ * @class   vtkUnstructuredGridGPURayCastStatistics
+ * @brief   what vtkUnstructuredGridGPURayCastMapper's last frame did: cells, uploads, passes
+ *
+ * The mapper's diagnostics in one object (vtkUnstructuredGridGPURayCastMapper::
+ * GetStatistics()), refreshed at the end of every frame and when the mapper
+ * releases its GL objects: how the mesh was rendered (natively or split into
+ * tetrahedra, boundary faces linked in a convexified grid), how many times
+ * each cache was built (tests assert that a transfer function edit did not
+ * re-upload the geometry), the frame's peels, continuations and cell steps,
+ * CPU and GPU time, and GPU memory.
+ */
+#ifndef vtkUnstructuredGridGPURayCastStatistics_h
+#define vtkUnstructuredGridGPURayCastStatistics_h
+
+#include "ppirayRenderingModule.h" // for export macro
+#include "vtkObject.h"
+
+class PPIRAYRENDERING_EXPORT vtkUnstructuredGridGPURayCastStatistics : public vtkObject
+{
+public:
+  static vtkUnstructuredGridGPURayCastStatistics* New();
+  vtkTypeMacro(vtkUnstructuredGridGPURayCastStatistics, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Tetrahedra rendered (after skipping unsupported and flat cells); 0 when
+   * the mesh is marched natively.
+   */
+  vtkGetMacro(NumberOfTetrahedra, vtkIdType);
+
+  /**
+   * Hexahedra (and voxels) rendered natively; 0 when the mesh was split
+   * into tetrahedra.
+   */
+  vtkGetMacro(NumberOfHexahedra, vtkIdType);
+
+  /**
+   * Cells rendered natively, without subdivision: hexahedra, voxels,
+   * wedges, pyramids and, in a mesh of those, tetrahedra (0 when the mesh
+   * was split into tetrahedra).
+   */
+  vtkGetMacro(NumberOfNativeCells, vtkIdType);
+
+  ///@{
+  /**
+   * A convexified grid (cell array "ppirayBoundaryCell"): the mesh's boundary
+   * faces joined to the imaginary faces on them where point ids do not join
+   * them (split by Steiner points, or across a seam) — rays cross these —,
+   * those of them split into several pieces, and those left open (rays
+   * leave there and re-enter by depth peeling; a warning names them).
+   */
+  vtkGetMacro(NumberOfLinkedBoundaryFaces, vtkIdType);
+  vtkGetMacro(NumberOfSplitBoundaryFaces, vtkIdType);
+  vtkGetMacro(NumberOfUnlinkedBoundaryFaces, vtkIdType);
+  ///@}
+
+  ///@{
+  /** How many times each cache was (re)built and uploaded. */
+  vtkGetMacro(GeometryUploadCount, int);
+  vtkGetMacro(FieldUploadCount, int);
+  vtkGetMacro(TransferFunctionUploadCount, int);
+  ///@}
+
+  /** Seconds the last FULL_PRE_INTEGRATION table build took (0 if none yet). */
+  vtkGetMacro(PreIntegrationTableBuildTime, double);
+
+  /**
+   * Bytes the mapper holds on the GPU (cell textures, boundary, transfer
+   * function, integration tables, render targets).
+   */
+  vtkGetMacro(GPUMemorySize, vtkIdType);
+
+  /** Depth peels the last frame needed. */
+  vtkGetMacro(NumberOfPeels, int);
+
+  /**
+   * March passes the last frame added to continue rays that needed more loop
+   * iterations than one pass takes (thousands of transfer-function control
+   * points crossed along a ray; some drivers end a shader's loops silently
+   * past a total count, Mesa's llvmpipe at 65,535).
+   */
+  vtkGetMacro(NumberOfContinuations, int);
+
+  /**
+   * Cell steps the last frame's rays took, over every pixel and peel (a step
+   * crosses one cell, or one piece of a folded cell); 0 unless the mapper's
+   * CountCellSteps is on.
+   */
+  vtkGetMacro(NumberOfCellSteps, vtkIdType);
+
+  /**
+   * CPU milliseconds of the last frame before its first pass: updating what
+   * changed, the near-plane sections, uniforms.
+   */
+  vtkGetMacro(PreparationTime, double);
+
+  /**
+   * The kinds of pass a frame draws (the mapper's TimePasses): the opaque
+   * depth copy and target clears, the near-plane sections (camera inside),
+   * each layer of boundary triangles with its occlusion query, each march,
+   * each check for rays left unfinished by the loop budget, the composite.
+   */
+  enum PassKinds
+  {
+    SETUP_PASS = 0,
+    NEAR_PLANE_ENTRY_PASS = 1,
+    ENTRY_PASS = 2,
+    MARCH_PASS = 3,
+    CONTINUATION_CHECK_PASS = 4,
+    COMPOSITE_PASS = 5,
+    NUMBER_OF_PASS_KINDS = 6
+  };
+
+  /**
+   * GPU milliseconds the last frame spent in passes of `kind`, and how many
+   * it drew (0 unless TimePasses and the GL has timer queries).
+   */
+  double GetPassTime(int kind);
+  int GetNumberOfPasses(int kind);
+  static const char* GetPassKindName(int kind);
+
+protected:
+  vtkUnstructuredGridGPURayCastStatistics() = default;
+  ~vtkUnstructuredGridGPURayCastStatistics() override = default;
+
+private:
+  vtkUnstructuredGridGPURayCastStatistics(const vtkUnstructuredGridGPURayCastStatistics&) = delete;
+  void operator=(const vtkUnstructuredGridGPURayCastStatistics&) = delete;
+
+  // The mapper writes them (vtkUnstructuredGridGPURayCastMapper::vtkInternals).
+  friend class vtkUnstructuredGridGPURayCastMapper;
+
+  vtkIdType NumberOfTetrahedra = 0;
+  vtkIdType NumberOfHexahedra = 0;
+  vtkIdType NumberOfNativeCells = 0;
+  vtkIdType NumberOfLinkedBoundaryFaces = 0;
+  vtkIdType NumberOfSplitBoundaryFaces = 0;
+  vtkIdType NumberOfUnlinkedBoundaryFaces = 0;
+  int GeometryUploadCount = 0;
+  int FieldUploadCount = 0;
+  int TransferFunctionUploadCount = 0;
+  double PreIntegrationTableBuildTime = 0.0;
+  vtkIdType GPUMemorySize = 0;
+  int NumberOfPeels = 0;
+  int NumberOfContinuations = 0;
+  vtkIdType NumberOfCellSteps = 0;
+  double PreparationTime = 0.0;
+  double PassTimes[NUMBER_OF_PASS_KINDS] = {};
+  int PassCounts[NUMBER_OF_PASS_KINDS] = {};
+};
+
+#endif
