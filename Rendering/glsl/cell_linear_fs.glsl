@@ -81,23 +81,28 @@ int cellKind(Cell cell)
 }
 
 // Triangles of face f of a cell of `kind`: 2 (a quadrilateral), 1, or 0
-// (no such face).
+// (no such face); a hexahedron's 2, a constant in a mesh of hexahedra.
 int faceTriangles(int kind, int f)
 {
+  if (!MIXED_CELLS)
+  {
+    return 2;
+  }
   int base = 24 * kind + 4 * f;
   return CELL_FACES[base] < 0 ? 0 : (CELL_FACES[base + 3] < 0 ? 1 : 2);
 }
 
-// Corner indices of triangle t (0, 1) of face f of a cell of `kind`.
+// Corner indices of triangle t (0, 1) of face f of a cell of `kind` (0 for
+// a triangle the kind does not have: faceTriangles() tells).
 ivec3 faceTriangle(int kind, int f, int t, int mask)
 {
   int base = 24 * kind + 4 * f;
   bool second = ((mask >> f) & 1) == 1;
   int q0 = CELL_FACES[base], q1 = CELL_FACES[base + 1];
   int q2 = CELL_FACES[base + 2], q3 = CELL_FACES[base + 3];
-  if (q3 < 0)
+  if (MIXED_CELLS && q3 < 0)
   {
-    return ivec3(q0, q1, q2);
+    return max(ivec3(q0, q1, q2), 0);
   }
   if (second)
   {
@@ -143,18 +148,16 @@ void trianglePlaneCrossing(ivec3 v, vec3 origin, vec3 direction, out float along
 }
 
 // Where the ray meets the plane of triangle `side` of face f of the loaded
-// cell (trianglePlaneCrossing), and its corners v; false where the cell's
-// kind has no such triangle.
-bool faceTriangleCrossing(Cell cell, int f, int side, vec3 origin, vec3 direction, out ivec3 v,
+// cell (trianglePlaneCrossing), and its corners v; along = 0 (heading
+// neither out nor in) where the cell's kind has no such triangle. Without
+// an early return, and its callers' loops without `continue`: the shader
+// compiler then unrolls them (results.md, "Cost of the one march").
+void faceTriangleCrossing(Cell cell, int f, int side, vec3 origin, vec3 direction, out ivec3 v,
   out float along, out float tf)
 {
-  if (side >= faceTriangles(cellKind(cell), f))
-  {
-    return false;
-  }
   v = faceTriangle(cellKind(cell), f, side, cellMask);
   trianglePlaneCrossing(v, origin, direction, along, tf);
-  return true;
+  along = side < faceTriangles(cellKind(cell), f) ? along : 0.0;
 }
 
 // The cell a boundary triangle code (2 (FACES h + f) + triangle) enters,
@@ -195,10 +198,7 @@ int nearestCrossedFace(Cell cell, int entryFace, vec3 origin, vec3 direction, fl
     {
       ivec3 v;
       float along, tf;
-      if (!faceTriangleCrossing(cell, f, side, origin, direction, v, along, tf))
-      {
-        continue;
-      }
+      faceTriangleCrossing(cell, f, side, origin, direction, v, along, tf);
       if (along > 0.0 && tf < tHit && tf >= t - 1.0e-6 * abs(t) &&
         exitCandidate(f, entryFace, tf, t) && crossesTriangle(v, origin, direction, tf))
       {
@@ -239,10 +239,7 @@ int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, boo
     {
       ivec3 v;
       float along, tf;
-      if (!faceTriangleCrossing(cell, f, side, origin, direction, v, along, tf))
-      {
-        continue;
-      }
+      faceTriangleCrossing(cell, f, side, origin, direction, v, along, tf);
       if (along > 0.0 && tf < tPlane && exitCandidate(f, entryFace, tf, t))
       {
         tPlane = tf;
@@ -339,13 +336,10 @@ float outsideFace(int h, int e, vec3 x)
   {
     for (int side = 0; side < 2; ++side)
     {
-      if (f == e || side >= faceTriangles(cellKind(cell), f))
-      {
-        continue;
-      }
       ivec3 v = faceTriangle(cellKind(cell), f, side, cellMask);
       vec3 n = normalize(cross(cellP[v.y] - cellP[v.x], cellP[v.z] - cellP[v.x]));
-      outside = max(outside, dot(n, x - cellP[v.x]));
+      bool other = f != e && side < faceTriangles(cellKind(cell), f);
+      outside = max(outside, other ? dot(n, x - cellP[v.x]) : -INFINITY);
     }
   }
   return outside;
@@ -362,7 +356,8 @@ float faceEntry(int h, int e, vec3 origin, vec3 direction, float tMin, out float
   {
     ivec3 v;
     float along, tf;
-    if (faceTriangleCrossing(cell, e, side, origin, direction, v, along, tf) && along < 0.0)
+    faceTriangleCrossing(cell, e, side, origin, direction, v, along, tf);
+    if (along < 0.0)
     {
       te = min(te, max(tf, tMin));
     }

@@ -89,15 +89,11 @@ int flatCellExit(vec4 c[4], int entryFace, vec3 x)
   for (int f = 0; f < 4; ++f)
   {
     float area2 = dot(m[f], m[f]);
-    if (f == entryFace || !(area2 > 1.0e-8 * largest))
-    {
-      continue;
-    }
     vec3 a = c[(f + 1) & 3].xyz - x, b = c[(f + 2) & 3].xyz - x, d = c[(f + 3) & 3].xyz - x;
     float la = dot(m[f], cross(b, d)) / area2;
     float lb = dot(m[f], cross(d, a)) / area2;
     float score = min(min(la, lb), 1.0 - la - lb);
-    if (score > bestScore)
+    if (f != entryFace && area2 > 1.0e-8 * largest && score > bestScore)
     {
       bestScore = score;
       best = f;
