@@ -12,17 +12,19 @@
 #
 # A mesh is a .vtu file, or wavelet:N (ppirayBenchmark's generated wavelet).
 # Options by environment: SIZE (128x128), MAPPER (ppiray-exact: no Psi table
-# to build under valgrind, the same march for native cells).
+# to build under valgrind, the same march for native cells), MAPPER_B (B's
+# mapper, default MAPPER: one build's two mappers compared, e.g. MAPPER=
+# ppiray-subdivide MAPPER_B=ppiray with A = B).
 set -euo pipefail
 a=$1
 b=$2
 shift 2
 count() {
-  local build=$1 out
+  local build=$1 mapper=$2 out
   out=$(mktemp)
   LP_NUM_THREADS=1 LD_LIBRARY_PATH="$build/lib" valgrind --tool=callgrind --smc-check=all \
     --callgrind-out-file="$out" "$build/bin/ppirayBenchmark" "${source[@]}" \
-    --size "${SIZE:-128x128}" --views 1 --mappers "${MAPPER:-ppiray-exact}" \
+    --size "${SIZE:-128x128}" --views 1 --mappers "$mapper" \
     --transfer-function realistic >/dev/null 2>&1
   callgrind_annotate "$out" 2>/dev/null | grep '???:0x' | grep -v '\.so' | head -1 |
     awk '{gsub(/,/, "", $1); print $1}'
@@ -34,8 +36,8 @@ for mesh in "$@"; do
   else
     source=(--file "$mesh")
   fi
-  ia=$(count "$a")
-  ib=$(count "$b")
+  ia=$(count "$a" "${MAPPER:-ppiray-exact}")
+  ib=$(count "$b" "${MAPPER_B:-${MAPPER:-ppiray-exact}}")
   echo "$(basename "$mesh"): A $ia, B $ib instructions, B/A" \
     "$(awk -v x="$ib" -v y="$ia" 'BEGIN { printf "%.3f", x / y }')"
 done
