@@ -22,7 +22,8 @@
 
 #include "vtkType.h"
 
-#include <vector> // for std::vector
+#include <cstddef> // for size_t
+#include <vector>  // for std::vector
 
 namespace ppiray
 {

@@ -23,7 +23,8 @@
 #ifndef ppirayLinearCellKinds_h
 #define ppirayLinearCellKinds_h
 
-#include "vtkCellType.h" // for VTK_HEXAHEDRON ...
+#include "ppirayCellAdjacency.h" // for ppiray::CellFaceTable
+#include "vtkCellType.h"         // for VTK_HEXAHEDRON ...
 
 namespace ppiray
 {
@@ -36,35 +37,32 @@ enum LinearCellKind
   NUMBER_OF_KINDS = 4
 };
 
-struct LinearCellKindInfo
+struct LinearCellKindInfo : CellFaceTable // corners, faces (outward; -1: no corner)
 {
   int VTKType;
-  int Corners;
-  int Faces;
-  int Face[6][4]; // outward; -1: no corner
-  int Mirror[8];  // corner i of the mirror image is corner Mirror[i]
-  int Frame[3];   // frame edges from corner 0 (-1: no frame)
+  int Mirror[8]; // corner i of the mirror image is corner Mirror[i]
+  int Frame[3];  // frame edges from corner 0 (-1: no frame)
 };
 
 inline const LinearCellKindInfo& LinearCellKindOf(int kind)
 {
   static const LinearCellKindInfo kinds[NUMBER_OF_KINDS] = {
-    { VTK_HEXAHEDRON, 8, 6,
-      { { 0, 4, 7, 3 }, { 1, 2, 6, 5 }, { 0, 1, 5, 4 }, { 3, 7, 6, 2 }, { 0, 3, 2, 1 },
-        { 4, 5, 6, 7 } },
-      { 4, 5, 6, 7, 0, 1, 2, 3 }, { 1, 3, 4 } },
-    { VTK_WEDGE, 6, 5,
-      { { 0, 2, 1, -1 }, { 3, 4, 5, -1 }, { 0, 1, 4, 3 }, { 1, 2, 5, 4 }, { 2, 0, 3, 5 },
-        { -1, -1, -1, -1 } },
-      { 3, 4, 5, 0, 1, 2, 0, 0 }, { 1, 2, 3 } },
-    { VTK_PYRAMID, 5, 5,
-      { { 0, 3, 2, 1 }, { 0, 1, 4, -1 }, { 1, 2, 4, -1 }, { 2, 3, 4, -1 }, { 3, 0, 4, -1 },
-        { -1, -1, -1, -1 } },
-      { 0, 3, 2, 1, 4, 0, 0, 0 }, { -1, -1, -1 } },
-    { VTK_TETRA, 4, 4,
-      { { 0, 1, 3, -1 }, { 1, 2, 3, -1 }, { 2, 0, 3, -1 }, { 0, 2, 1, -1 }, { -1, -1, -1, -1 },
-        { -1, -1, -1, -1 } },
-      { 0, 2, 1, 3, 0, 0, 0, 0 }, { 1, 2, 3 } },
+    { { 8, 6,
+        { { 0, 4, 7, 3 }, { 1, 2, 6, 5 }, { 0, 1, 5, 4 }, { 3, 7, 6, 2 }, { 0, 3, 2, 1 },
+          { 4, 5, 6, 7 } } },
+      VTK_HEXAHEDRON, { 4, 5, 6, 7, 0, 1, 2, 3 }, { 1, 3, 4 } },
+    { { 6, 5,
+        { { 0, 2, 1, -1 }, { 3, 4, 5, -1 }, { 0, 1, 4, 3 }, { 1, 2, 5, 4 }, { 2, 0, 3, 5 },
+          { -1, -1, -1, -1 } } },
+      VTK_WEDGE, { 3, 4, 5, 0, 1, 2, 0, 0 }, { 1, 2, 3 } },
+    { { 5, 5,
+        { { 0, 3, 2, 1 }, { 0, 1, 4, -1 }, { 1, 2, 4, -1 }, { 2, 3, 4, -1 }, { 3, 0, 4, -1 },
+          { -1, -1, -1, -1 } } },
+      VTK_PYRAMID, { 0, 3, 2, 1, 4, 0, 0, 0 }, { -1, -1, -1 } },
+    { { 4, 4,
+        { { 0, 1, 3, -1 }, { 1, 2, 3, -1 }, { 2, 0, 3, -1 }, { 0, 2, 1, -1 }, { -1, -1, -1, -1 },
+          { -1, -1, -1, -1 } } },
+      VTK_TETRA, { 0, 2, 1, 3, 0, 0, 0, 0 }, { 1, 2, 3 } },
   };
   return kinds[kind];
 }
@@ -85,6 +83,29 @@ inline int LinearCellKindOfType(int vtkType)
     default:
       return -1;
   }
+}
+
+/**
+ * The cells for ppiray::MatchCellFaces: `kinds` (one per cell) and
+ * `cornerIds` (8 per cell) as vtkHexahedralCellTextures stores them, 6 face
+ * slots per cell; `points` (3 doubles each) may be nullptr.
+ */
+inline CellFaceMesh LinearCellFaceMesh(vtkIdType numberOfPoints, const double* points,
+  const vtkIdType* cornerIds, const unsigned char* kinds, vtkIdType numberOfCells)
+{
+  CellFaceMesh mesh;
+  mesh.NumberOfPoints = numberOfPoints;
+  mesh.NumberOfCells = numberOfCells;
+  mesh.CornerIds = cornerIds;
+  mesh.CornerStride = 8;
+  for (int kind = 0; kind < NUMBER_OF_KINDS; ++kind)
+  {
+    mesh.Tables[kind] = &LinearCellKindOf(kind);
+  }
+  mesh.Kinds = kinds;
+  mesh.FaceSlots = 6;
+  mesh.Points = points;
+  return mesh;
 }
 
 /** Corners of face f of a kind: 3, 4, or 0 where the kind has no face f. */

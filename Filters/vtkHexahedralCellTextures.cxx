@@ -1,5 +1,6 @@
 #include "vtkHexahedralCellTextures.h"
 
+#include "ppirayCellAdjacency.h"
 #include "ppirayConformingTetrahedra.h"
 #include "ppirayHiddenCells.h"
 #include "ppirayInvertedSheets.h"
@@ -50,59 +51,11 @@ double FrameQuality(const double* local, const vtkIdType c[8], int i)
   return scale > 0 ? std::abs(volume) / scale : 0.0;
 }
 
-// The centre of a cell's corners.
-void CellCentre(const double* local, const vtkIdType* c, int kind, double centre[3])
+// Signed volume of a cell (ppiray::CellVolume6).
+double SignedVolume(const double* local, const vtkIdType c[8], int kind)
 {
-  const int n = ppiray::LinearCellKindOf(kind).Corners;
-  centre[0] = centre[1] = centre[2] = 0;
-  for (int v = 0; v < n; ++v)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      centre[k] += local[3 * c[v] + k] / n;
-    }
-  }
+  return ppiray::CellVolume6(ppiray::LinearCellKindOf(kind), c, local) / 6.0;
 }
-
-// Whether cells a / 6 and b / 6 lie on one side of their shared face (face
-// a % 6 of the first): their centres on the same side of the plane through
-// the face's centre with its normal, (q2 - q0) x (q3 - q1) for a quadrilateral,
-// (q1 - q0) x (q2 - q0) for a triangle (the mesh folds back on itself there).
-bool OnOneSide(const double* local, const vtkIdType* cornerIds, const unsigned char* kinds,
-  vtkIdType a, vtkIdType b)
-{
-  const vtkIdType* ca = cornerIds + 8 * (a / 6);
-  const vtkIdType* cb = cornerIds + 8 * (b / 6);
-  const int kind = kinds[a / 6];
-  const int f = static_cast<int>(a % 6);
-  const int* q = ppiray::LinearCellKindOf(kind).Face[f];
-  const int size = ppiray::FaceSize(kind, f);
-  double centre[3] = { 0, 0, 0 }, inA[3], inB[3];
-  CellCentre(local, ca, kind, inA);
-  CellCentre(local, cb, kinds[b / 6], inB);
-  for (int k = 0; k < 3; ++k)
-  {
-    for (int v = 0; v < size; ++v)
-    {
-      centre[k] += local[3 * ca[q[v]] + k] / size;
-    }
-  }
-  auto at = [&](int v) { return local + 3 * ca[q[v]]; };
-  double e0[3], e1[3], n[3];
-  vtkMath::Subtract(at(2), at(0), e0);
-  vtkMath::Subtract(size == 4 ? at(3) : at(1), size == 4 ? at(1) : at(0), e1);
-  if (size == 3)
-  {
-    std::swap(e0, e1); // (q1 - q0) x (q2 - q0)
-  }
-  vtkMath::Cross(e0, e1, n);
-  vtkMath::Subtract(inA, centre, inA);
-  vtkMath::Subtract(inB, centre, inB);
-  const double sideA = vtkMath::Dot(n, inA), sideB = vtkMath::Dot(n, inB);
-  return (sideA > 0 && sideB > 0) || (sideA < 0 && sideB < 0);
-}
-
-double SignedVolume(const double* local, const vtkIdType c[8], int kind);
 
 // Negative for a left-handed (mirrored) hexahedron: the frame volumes at its
 // eight corners, summed. All eight, not two opposite ones: a collapsed corner
@@ -124,30 +77,6 @@ double Handedness(const double* local, const vtkIdType c[8], int kind)
 
 // Corner positions on the unit cube, bits (x, y, z), in VTK_HEXAHEDRON order.
 const int CornerBits[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
-
-// Signed volume of a cell by the divergence theorem over its outward faces,
-// each fanned from its first corner: sum of det[a - p0, b - p0, c - p0] / 6
-// over the fan triangles (a, b, c), p0 the cell's corner 0.
-double SignedVolume(const double* local, const vtkIdType c[8], int kind)
-{
-  const ppiray::LinearCellKindInfo& info = ppiray::LinearCellKindOf(kind);
-  auto at = [&](int i) { return local + 3 * c[i]; };
-  double volume = 0;
-  for (int f = 0; f < info.Faces; ++f)
-  {
-    const int* q = info.Face[f];
-    for (int t = 0; t + 2 < ppiray::FaceSize(kind, f); ++t)
-    {
-      double a[3], b[3], d[3], n[3];
-      vtkMath::Subtract(at(q[0]), at(0), a);
-      vtkMath::Subtract(at(q[t + 1]), at(0), b);
-      vtkMath::Subtract(at(q[t + 2]), at(0), d);
-      vtkMath::Cross(b, d, n);
-      volume += vtkMath::Dot(a, n) / 6.0;
-    }
-  }
-  return volume;
-}
 
 // Whether the cell has no volume: less than 1e-9 of its largest edge cubed.
 bool IsFlat(const double* local, const vtkIdType c[8], int kind)
@@ -270,10 +199,6 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->StoreCorners();
   std::vector<vtkIdType> boundary = this->MatchFaces();
   this->LinkSplitQuadrilaterals(boundary);
-  if (this->NumberOfFoldedFaces > 0)
-  {
-    this->MarkTurnBacks();
-  }
   this->ExtractBoundary(boundary, grid->GetNumberOfPoints());
   // Faces with reflex edges: the faces across them, for the march to enter
   // again where it leaves next to one (boundary triangle codes 12 h + 2 f + t).
@@ -449,12 +374,19 @@ void vtkHexahedralCellTextures::StoreCorners()
 }
 
 //------------------------------------------------------------------------------
+ppiray::CellFaceMesh vtkHexahedralCellTextures::FaceMesh() const
+{
+  return ppiray::LinearCellFaceMesh(static_cast<vtkIdType>(this->LocalPoints.size() / 3),
+    this->LocalPoints.data(), this->CornerIds.data(), this->Kinds.data(),
+    this->GetNumberOfHexahedra());
+}
+
+//------------------------------------------------------------------------------
 std::vector<vtkIdType> vtkHexahedralCellTextures::MatchFaces()
 {
-  // Faces matched by their sorted point ids (a triangle's key starts with
-  // -1, so a triangle never matches a quadrilateral); a quadrilateral's
-  // diagonal by the smallest id, except where that folds a collapsed
-  // hexahedron (ppiray::QuadDiagonals).
+  // A quadrilateral's diagonal by the smallest id, except where that folds a
+  // collapsed hexahedron (ppiray::QuadDiagonals); the neighbours, folds and
+  // boundary by the stage every layout shares (ppirayCellAdjacency.h).
   const vtkIdType count = this->GetNumberOfHexahedra();
   ppiray::QuadDiagonals diagonals;
   for (vtkIdType h = 0; h < count; ++h)
@@ -465,8 +397,9 @@ std::vector<vtkIdType> vtkHexahedralCellTextures::MatchFaces()
     }
   }
   this->NumberOfUnfoldedFaces = diagonals.GetNumberOfUnfoldedFaces();
-  std::vector<FaceKey> faces;
-  faces.reserve(6 * count);
+  const ppiray::CellAdjacency adjacency = ppiray::MatchCellFaces(this->FaceMesh());
+  this->NumberOfNonManifoldFaces = adjacency.NumberOfNonManifoldFaces;
+  this->NumberOfFoldedFaces = adjacency.NumberOfFoldedFaces;
   this->Neighbors.assign(8 * count, -1);
   for (vtkIdType h = 0; h < count; ++h)
   {
@@ -476,53 +409,26 @@ std::vector<vtkIdType> vtkHexahedralCellTextures::MatchFaces()
     for (int f = 0; f < ppiray::LinearCellKindOf(kind).Faces; ++f)
     {
       const int* q = ppiray::LinearCellKindOf(kind).Face[f];
-      FaceKey key;
       if (ppiray::FaceSize(kind, f) == 4)
       {
-        key.Ids = { c[q[0]], c[q[1]], c[q[2]], c[q[3]] };
-        mask |=
-          diagonals.AlongFirstDiagonal(key.Ids[0], key.Ids[1], key.Ids[2], key.Ids[3]) ? 0 : 1 << f;
+        mask |= diagonals.AlongFirstDiagonal(c[q[0]], c[q[1]], c[q[2]], c[q[3]]) ? 0 : 1 << f;
       }
-      else
+      const vtkIdType n = adjacency.Neighbors[6 * h + f];
+      const bool folded = adjacency.Folded[6 * h + f] != 0;
+      if (n >= 0)
       {
-        key.Ids = { -1, c[q[0]], c[q[1]], c[q[2]] };
+        this->Neighbors[8 * h + f] = NeighborCode(n, adjacency.NeighborFaces[6 * h + f], folded,
+          folded && ppiray::WalksBackInPlace(adjacency.Inverted, h, n));
       }
-      std::sort(key.Ids.begin(), key.Ids.end());
-      key.Owner = 6 * h + f;
-      faces.push_back(key);
     }
     this->Neighbors[8 * h + 6] = mask;
     this->Neighbors[8 * h + 7] = kind;
   }
-  std::sort(faces.begin(), faces.end());
   std::vector<vtkIdType> boundary; // 6 h + f
-  const double* local = this->LocalPoints.data();
-  for (size_t i = 0; i < faces.size();)
+  for (size_t k = 0; k < adjacency.BoundaryFaces.size(); k += 2)
   {
-    size_t j = i + 1;
-    while (j < faces.size() && faces[j].Ids == faces[i].Ids)
-    {
-      ++j;
-    }
-    if (j - i == 2)
-    {
-      const vtkIdType a = faces[i].Owner, b = faces[i + 1].Owner;
-      const bool folded = OnOneSide(local, this->CornerIds.data(), this->Kinds.data(), a, b);
-      this->NumberOfFoldedFaces += folded ? 1 : 0;
-      this->Neighbors[8 * (a / 6) + a % 6] = NeighborCode(b / 6, b % 6, folded, false);
-      this->Neighbors[8 * (b / 6) + b % 6] = NeighborCode(a / 6, a % 6, folded, false);
-    }
-    else
-    {
-      this->NumberOfNonManifoldFaces += j - i > 2 ? 1 : 0;
-      for (size_t k = i; k < j; ++k)
-      {
-        boundary.push_back(faces[k].Owner);
-      }
-    }
-    i = j;
+    boundary.push_back(6 * adjacency.BoundaryFaces[k] + adjacency.BoundaryFaces[k + 1]);
   }
-  std::sort(boundary.begin(), boundary.end());
   return boundary;
 }
 
@@ -561,7 +467,21 @@ void vtkHexahedralCellTextures::LinkSplitQuadrilaterals(std::vector<vtkIdType>& 
     auto range = std::equal_range(triangles.begin(), triangles.end(), probe);
     return range.second - range.first == 1 ? range.first->Owner : -1;
   };
-  const double* local = this->LocalPoints.data();
+  // Whether the piece's cell lies across the quadrilateral from cell h (not
+  // folded onto its side).
+  const ppiray::CellFaceMesh mesh = this->FaceMesh();
+  auto acrossFace = [&](vtkIdType h, int f, vtkIdType piece)
+  {
+    vtkIdType ids[4];
+    const int* q = ppiray::LinearCellKindOf(this->Kinds[h]).Face[f];
+    for (int v = 0; v < 4; ++v)
+    {
+      ids[v] = this->CornerIds[8 * h + q[v]];
+    }
+    const int side = ppiray::SideOfFace(mesh, h, f, ids, 4);
+    const int pieceSide = ppiray::SideOfFace(mesh, piece / 6, static_cast<int>(piece % 6), ids, 4);
+    return side == 0 || side != pieceSide;
+  };
   std::vector<unsigned char> linked(6 * this->GetNumberOfHexahedra(), 0);
   for (vtkIdType owner : boundary)
   {
@@ -584,9 +504,8 @@ void vtkHexahedralCellTextures::LinkSplitQuadrilaterals(std::vector<vtkIdType>& 
       pieces[t] = findTriangle(ids);
     }
     if (pieces[0] < 0 || pieces[1] < 0 || pieces[0] / 6 == h || pieces[1] / 6 == h ||
-        linked[pieces[0]] || linked[pieces[1]] ||
-        OnOneSide(local, this->CornerIds.data(), this->Kinds.data(), owner, pieces[0]) ||
-        OnOneSide(local, this->CornerIds.data(), this->Kinds.data(), owner, pieces[1]))
+        linked[pieces[0]] || linked[pieces[1]] || !acrossFace(h, f, pieces[0]) ||
+        !acrossFace(h, f, pieces[1]))
     {
       continue;
     }
@@ -606,34 +525,6 @@ void vtkHexahedralCellTextures::LinkSplitQuadrilaterals(std::vector<vtkIdType>& 
   boundary.erase(std::remove_if(boundary.begin(), boundary.end(),
                    [&](vtkIdType owner) { return linked[owner] != 0; }),
     boundary.end());
-}
-
-//------------------------------------------------------------------------------
-void vtkHexahedralCellTextures::MarkTurnBacks()
-{
-  // The inverted side of each fold: there the ray turns back in the cell it
-  // is in (ppirayInvertedSheets.h).
-  const double* local = this->LocalPoints.data();
-  const vtkIdType count = this->GetNumberOfHexahedra();
-  auto cellOf = [](int code) { return code == -1 ? -1 : (code < -1 ? -code - 2 : code) / 6; };
-  auto faceOf = [](int code) { return (code < -1 ? -code - 2 : code) % 6; };
-  const std::vector<unsigned char> inverted = ppiray::InvertedSheets(
-    count, 6, [&](vtkIdType h, int f) { return cellOf(this->Neighbors[8 * h + f]); },
-    [&](vtkIdType h, int f) { return this->Neighbors[8 * h + f] < -1; },
-    [&](vtkIdType h)
-    { return std::abs(SignedVolume(local, this->CornerIds.data() + 8 * h, this->Kinds[h])); });
-  for (vtkIdType h = 0; h < count; ++h)
-  {
-    for (int f = 0; f < 6; ++f)
-    {
-      int& code = this->Neighbors[8 * h + f];
-      const int n = cellOf(code);
-      if (code < -1 && ppiray::WalksBackInPlace(inverted, h, n))
-      {
-        code = NeighborCode(n, faceOf(code), true, true);
-      }
-    }
-  }
 }
 
 //------------------------------------------------------------------------------

@@ -42,6 +42,11 @@
 
 #include <vector> // for std::vector
 
+namespace ppiray
+{
+struct CellFaceMesh;
+}
+
 class vtkDataArray;
 class vtkUnstructuredGrid;
 
@@ -120,6 +125,10 @@ public:
   const std::vector<int>& GetBoundaryFaces() const { return this->BoundaryFaces; }
 
   vtkGetMacro(NumberOfMirroredHexahedra, vtkIdType);
+  /**
+   * Cell faces on a face that more than two cell faces share (paired by side,
+   * ppirayCellAdjacency.h).
+   */
   vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
   /**
    * Faces split along the diagonal that does not go through their smallest
@@ -179,9 +188,9 @@ protected:
   void DropFlatCells();
   void OrientCells();
   void StoreCorners();
-  std::vector<vtkIdType> MatchFaces(); // the boundary faces, 6 h + f
+  ppiray::CellFaceMesh FaceMesh() const; // the cells for ppiray::MatchCellFaces
+  std::vector<vtkIdType> MatchFaces();   // the boundary faces, 6 h + f
   void LinkSplitQuadrilaterals(std::vector<vtkIdType>& boundary);
-  void MarkTurnBacks();
   void ExtractBoundary(const std::vector<vtkIdType>& boundary, vtkIdType numberOfPoints);
 
   double Origin[3] = { 0, 0, 0 };

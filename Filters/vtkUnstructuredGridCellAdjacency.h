@@ -8,27 +8,14 @@
  * vtkUnstructuredGridCellAdjacency::FaceVertex (outward for a positively oriented
  * tetrahedron).
  *
- * The algorithm builds point-to-cell links with a counting sort, then for every
- * face scans the cells around the face point that has fewest of them: O(cells)
- * for bounded vertex degree, parallel over cells with OpenMP.
- *
- * Real meshes share a face between more than two tetrahedra (zero-volume
- * tetrahedra between two triangulations of a quadrilateral or on a face, a
- * hexahedron collapsed into tetrahedra with repeated point ids, tangled
- * regions). Given the coordinates, the faces on one face are paired by the
- * side of the face their tetrahedron's fourth point lies on: positive with
- * negative; a face with cells on one side only goes on through a flat
- * (zero-volume) tetrahedron if one is there, else its same-side cells pair
- * up (folded); flat tetrahedra on a face that non-flat cells close are left
- * out (none of their faces is paired through it or a boundary); flat faces
- * alone pair with each other. Two faces of one tetrahedron never pair; a
- * face left without a partner is a boundary face. Faces with repeated point
- * ids (zero area) are neither paired nor boundary.
- *
- * A pair whose two tetrahedra lie on the same side of their face is folded
- * (the mesh turns back on itself there: an inverted cell in a tangled
- * region); IsFolded() and IsInverted() tell the ray caster how to walk
- * through it.
+ * The tetrahedra's use of the one adjacency stage every cell layout shares
+ * (ppiray::MatchCellFaces, ppirayCellAdjacency.h, which states the rules):
+ * linear time, parallel over cells; faces shared by more than two
+ * tetrahedra (zero-volume tetrahedra between two triangulations of a
+ * quadrilateral, collapsed hexahedra, tangled regions) paired by the side
+ * of the face their fourth point lies on; flat (zero-volume) tetrahedra
+ * between the others; folded faces and the inverted side of each fold for
+ * the ray caster (IsFolded(), WalksBackInPlace()).
  */
 #ifndef vtkUnstructuredGridCellAdjacency_h
 #define vtkUnstructuredGridCellAdjacency_h

@@ -156,9 +156,9 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
   }
   if (hexes.GetNumberOfNonManifoldFaces() > 0)
   {
-    vtkWarningWithObjectMacro(reporter, << hexes.GetNumberOfNonManifoldFaces()
-                                        << " faces are shared by more than two "
-                                        << this->GetCellName() << " (non-manifold mesh).");
+    vtkWarningWithObjectMacro(reporter,
+      << hexes.GetNumberOfNonManifoldFaces() << " cell faces lie on faces shared by more than two "
+      << this->GetCellName() << " (non-manifold mesh): paired by side.");
   }
   this->ReportFoldedFaces(hexes.GetNumberOfFoldedFaces(), reporter);
   return BuildResult::Built;

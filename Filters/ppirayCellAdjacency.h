@@ -1,0 +1,114 @@
+/**
+ * @file   ppirayCellAdjacency.h
+ * @brief  face neighbours, boundary and folds of a mesh of cells of any kind with up to 6 faces
+ *
+ * The one adjacency stage of every cell layout (tetrahedra,
+ * vtkTetrahedralCellTextures through vtkUnstructuredGridCellAdjacency;
+ * hexahedra, wedges, pyramids and tetrahedra together,
+ * vtkHexahedralCellTextures). A cell kind supplies only its face table
+ * (CellFaceTable); the rules below are the same for every kind.
+ *
+ * Faces are matched by their point ids: a triangle with a triangle, a
+ * quadrilateral with a quadrilateral. Point-to-cell links are built by a
+ * counting sort; every face scans the cells around its point with fewest of
+ * them: O(cells) for bounded vertex degree, parallel over cells with OpenMP.
+ *
+ * Real meshes share a face between more than two cells (zero-volume cells
+ * between two triangulations of a quadrilateral or on a face, a hexahedron
+ * collapsed into tetrahedra with repeated point ids, tangled regions).
+ * Given the coordinates, the cell faces on one face are paired by the side
+ * of the face their cell lies on (SideOfFace: the centre of the cell's
+ * corners off the face): positive with negative; a face with cells on one
+ * side only goes on through a flat (zero-volume) cell if one is there, else
+ * its same-side cells pair up (folded); flat cells on a face that non-flat
+ * cells close are left out (none of their faces is paired through it or a
+ * boundary); flat faces alone pair with each other. Two faces of one cell
+ * never pair; a face left without a partner is a boundary face. Faces with
+ * fewer than three distinct point ids (zero area) are neither paired nor
+ * boundary.
+ *
+ * A pair whose two cells lie on the same side of their face is folded (the
+ * mesh turns back on itself there: an inverted cell in a tangled region);
+ * Folded and Inverted (ppirayInvertedSheets.h) tell the ray caster how to
+ * walk through it.
+ */
+#ifndef ppirayCellAdjacency_h
+#define ppirayCellAdjacency_h
+
+#include "ppirayFiltersModule.h" // for export macro
+#include "vtkType.h"
+
+#include <vector> // for std::vector
+
+namespace ppiray
+{
+/**
+ * The faces of a cell kind: corner indices of each face, wound outward for a
+ * positively oriented cell; a triangle's fourth entry is -1.
+ */
+struct CellFaceTable
+{
+  int Corners;
+  int Faces;
+  int Face[6][4];
+};
+
+/** The cells whose faces MatchCellFaces() matches. */
+struct CellFaceMesh
+{
+  vtkIdType NumberOfPoints = 0;
+  vtkIdType NumberOfCells = 0;
+  /** CornerStride point ids per cell. */
+  const vtkIdType* CornerIds = nullptr;
+  int CornerStride = 4;
+  /** Face table of each kind; Kinds (one per cell) indexes it, or nullptr: kind 0. */
+  const CellFaceTable* Tables[4] = { nullptr, nullptr, nullptr, nullptr };
+  const unsigned char* Kinds = nullptr;
+  /** Entries per cell in CellAdjacency's face arrays (at least every table's Faces). */
+  int FaceSlots = 4;
+  /** 3 doubles per point, or nullptr: faces are not ordered by side, nothing is folded. */
+  const double* Points = nullptr;
+  /** One per cell, or nullptr: zero-volume cells (they lie on neither side). */
+  const unsigned char* Flat = nullptr;
+};
+
+/** What MatchCellFaces() finds: FaceSlots entries per cell in the face arrays. */
+struct CellAdjacency
+{
+  std::vector<vtkIdType> Neighbors;       // the cell across the face, -1: none
+  std::vector<signed char> NeighborFaces; // its face, -1: none
+  std::vector<unsigned char> Folded;      // both cells on one side of the face
+  std::vector<unsigned char> Inverted;    // one per cell (ppirayInvertedSheets.h)
+  std::vector<vtkIdType> BoundaryFaces;   // (cell, face) pairs, in cell order
+  /** Cell faces on a face that more than two cell faces share. */
+  vtkIdType NumberOfNonManifoldFaces = 0;
+  /** Folded pairs of cell faces. */
+  vtkIdType NumberOfFoldedFaces = 0;
+};
+
+PPIRAYFILTERS_EXPORT CellAdjacency MatchCellFaces(const CellFaceMesh& mesh);
+
+/**
+ * The side of face `face` of `cell` that the cell lies on: the sign (+1, -1,
+ * 0) of its off-face centre q (the mean of its corners not on the face; a
+ * tetrahedron's opposite corner) against the plane of the face with point
+ * ids `faceIds` (`size` 3 or 4, in either winding, from any corner): a
+ * triangle (a, b, c) by ascending id, det[b - a, c - a, q - a]; a
+ * quadrilateral by its cycle c0..c3 that is smallest by ids,
+ * ((c2 - c0) x (c3 - c1)) . (q - centre). Both cells sharing a face measure
+ * against the same plane.
+ */
+PPIRAYFILTERS_EXPORT int SideOfFace(
+  const CellFaceMesh& mesh, vtkIdType cell, int face, const vtkIdType* faceIds, int size);
+
+/**
+ * Six times the signed volume of a cell (`corners`: its point ids, `points`:
+ * 3 doubles per point) by the divergence theorem: the sum of
+ * det[a - p0, b - p0, c - p0] over its faces fanned from their first corner,
+ * p0 its corner 0.
+ */
+PPIRAYFILTERS_EXPORT double CellVolume6(
+  const CellFaceTable& table, const vtkIdType* corners, const double* points);
+}
+
+#endif
