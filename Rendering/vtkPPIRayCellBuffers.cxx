@@ -236,14 +236,20 @@ bool vtkPPIRayCellBuffers::IsBoundaryConvex()
 }
 
 //------------------------------------------------------------------------------
-size_t vtkPPIRayCellBuffers::GetGPUBytes() const
+size_t vtkPPIRayCellBuffers::GetCellArrayBytes() const
 {
-  size_t bytes = this->BoundaryFaces.GetBytes() + this->BoundaryBytes;
+  size_t bytes = 0;
   for (const vtkPPIRayBufferTexture& array : this->Arrays)
   {
     bytes += array.GetBytes();
   }
   return bytes;
+}
+
+//------------------------------------------------------------------------------
+size_t vtkPPIRayCellBuffers::GetGPUBytes() const
+{
+  return this->BoundaryFaces.GetBytes() + this->BoundaryBytes + this->GetCellArrayBytes();
 }
 
 //------------------------------------------------------------------------------

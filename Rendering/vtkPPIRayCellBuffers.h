@@ -160,6 +160,7 @@ public:
   bool IsBoundaryConvex();
 
   size_t GetGPUBytes() const;
+  size_t GetCellArrayBytes() const; // the cell arrays alone
   void ReleaseGraphicsResources(vtkWindow* window);
 
 protected:

@@ -208,6 +208,8 @@ void vtkUnstructuredGridGPURayCastMapper::CollectStatistics()
     (in.Mesh.GetBuffers() ? in.Mesh.GetBuffers()->GetGPUBytes() : 0) +
     in.TransferFunction.GetGPUBytes() + (in.Integrator ? in.Integrator->GetGPUBytes() : 0) +
     in.Peeling.GetGPUBytes());
+  out.CellArrayBytes =
+    static_cast<vtkIdType>(in.Mesh.GetBuffers() ? in.Mesh.GetBuffers()->GetCellArrayBytes() : 0);
   for (int kind = 0; kind < vtkPPIRayPassTimes::NumberOfPasses; ++kind)
   {
     out.PassTimes[kind] = in.Peeling.GetPassTimes().GetMilliseconds(kind);

@@ -51,6 +51,7 @@ void vtkUnstructuredGridGPURayCastStatistics::PrintSelf(ostream& os, vtkIndent i
   os << indent << "TransferFunctionUploadCount: " << this->TransferFunctionUploadCount << "\n";
   os << indent << "PreIntegrationTableBuildTime: " << this->PreIntegrationTableBuildTime << "\n";
   os << indent << "GPUMemorySize: " << this->GPUMemorySize << "\n";
+  os << indent << "CellArrayBytes: " << this->CellArrayBytes << "\n";
   os << indent << "NumberOfPeels: " << this->NumberOfPeels << "\n";
   os << indent << "NumberOfContinuations: " << this->NumberOfContinuations << "\n";
   os << indent << "NumberOfCellSteps: " << this->NumberOfCellSteps << "\n";
@@ -60,4 +61,11 @@ void vtkUnstructuredGridGPURayCastStatistics::PrintSelf(ostream& os, vtkIndent i
     os << indent << GetPassKindName(kind) << ": " << this->PassCounts[kind] << " passes, "
        << this->PassTimes[kind] << " ms\n";
   }
+}
+
+//------------------------------------------------------------------------------
+double vtkUnstructuredGridGPURayCastStatistics::GetBytesPerCell() const
+{
+  const vtkIdType cells = this->NumberOfTetrahedra + this->NumberOfNativeCells;
+  return cells > 0 ? static_cast<double>(this->CellArrayBytes) / cells : 0.0;
 }

@@ -71,6 +71,20 @@ public:
    */
   vtkGetMacro(GPUMemorySize, vtkIdType);
 
+  ///@{
+  /**
+   * Bytes of the cell arrays alone (geometry, neighbours, field; without the
+   * boundary, transfer function, tables and targets), and those over the
+   * cells marched (GetNumberOfTetrahedra() or GetNumberOfNativeCells()):
+   * what a cell costs in the layout in use. Every kind costs the same in
+   * one layout (the native layout stores each cell in a hexahedron's slots);
+   * lists of split faces and re-entry faces add a little
+   * (Documentation/results.md, "GPU bytes per cell, by kind and layout").
+   */
+  vtkGetMacro(CellArrayBytes, vtkIdType);
+  double GetBytesPerCell() const;
+  ///@}
+
   /** Depth peels the last frame needed. */
   vtkGetMacro(NumberOfPeels, int);
 
@@ -142,6 +156,7 @@ private:
   int TransferFunctionUploadCount = 0;
   double PreIntegrationTableBuildTime = 0.0;
   vtkIdType GPUMemorySize = 0;
+  vtkIdType CellArrayBytes = 0;
   int NumberOfPeels = 0;
   int NumberOfContinuations = 0;
   vtkIdType NumberOfCellSteps = 0;

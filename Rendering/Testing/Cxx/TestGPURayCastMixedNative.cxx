@@ -44,6 +44,7 @@
 #include "vtkHexahedralCellTextures.h"
 #include "vtkPointData.h"
 #include "vtkSmartPointer.h"
+#include "vtkTetrahedralCellTextures.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include <cmath>
@@ -167,6 +168,36 @@ int TestGPURayCastMixedNative(int, char*[])
   if (!(split.P99 > native.P99 && split.MaxDifference > native.MaxDifference))
   {
     errors += Fail("the split is not further from VTK's field than the native march");
+  }
+
+  // GPU bytes per cell: natively every kind in a hexahedron's slots, plus the
+  // lists of quadrilaterals met by two triangles (from the CPU arrays); split,
+  // the planes layout's 96 bytes per tetrahedron (a block: no lists).
+  vtkNew<vtkHexahedralCellTextures> straightTextures;
+  straightTextures->BuildGeometry(straight.Grid);
+  const vtkIdType cells = straightTextures->GetNumberOfHexahedra();
+  const double nativeBytes =
+    (4.0 * (straightTextures->GetCorners().size() + straightTextures->GetNeighbors().size()) +
+      16.0 * vtkHexahedralCellTextures::CoefficientTexels() * cells) /
+    cells; // the coefficients come with the field (BuildField())
+  double measured[2];
+  vtkIdType total[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    mapper->SetHexahedronMode(i == 0 ? Mapper::HEXAHEDRON_ACCURATE : Mapper::HEXAHEDRON_SUBDIVIDE);
+    mapper->SetInputData(straight.Grid);
+    scene.Window->Render();
+    measured[i] = mapper->GetStatistics()->GetBytesPerCell();
+    total[i] = mapper->GetStatistics()->GetCellArrayBytes();
+  }
+  std::cout << "GPU bytes per cell: native " << measured[0] << " (CPU arrays " << nativeBytes
+            << ", slots " << vtkHexahedralCellTextures::BytesPerHexahedron() << "), split "
+            << measured[1] << "; cell arrays native " << total[0] << " B for " << cells
+            << " cells, split " << total[1] << " B\n";
+  if (measured[0] != nativeBytes || nativeBytes < vtkHexahedralCellTextures::BytesPerHexahedron() ||
+      measured[1] != vtkTetrahedralCellTextures::BytesPerTetrahedron())
+  {
+    errors += Fail("GPU bytes per cell are not the layouts'");
   }
 
   // 4. Distorted: measured p99 3.3, max 5.9 (split 3.6, 5.9); bounds with a
