@@ -9,10 +9,11 @@
  *   bounds, in VTK_HEXAHEDRON order, right-handed (a mirrored hexahedron has
  *   its bottom and top swapped). Face planes are derived from them on the GPU;
  * - neighbours: the hexahedron through each face of vtkHexahedron::GetFaceArray
- *   (-1 on the boundary), and a 6-bit mask: bit f set when face f is split
- *   into triangles along its second diagonal (q1-q3), clear along q0-q2, by
- *   the rule of ppirayConformingTetrahedra.h (the diagonal through the smallest
- *   point id), so both cells sharing a face see the same two triangles;
+ *   (-1 on the boundary; matched, paired by side and folds marked by the
+ *   stage every layout shares, ppirayCellAdjacency.h), and a 6-bit mask: bit f set when face f is
+ * split into triangles along its second diagonal (q1-q3), clear along q0-q2, by the rule of
+ * ppirayConformingTetrahedra.h (the diagonal through the smallest point id), so both cells sharing
+ * a face see the same two triangles;
  * - coefficients: c0..c7 of the trilinear field in the cell's frame (origin
  *   corner 0, axes to corners 1, 3, 4; vtkHexahedronCoefficients); of a
  *   wedge or tetrahedron VTK's interpolation in its frame (axes to corners
