@@ -12,6 +12,7 @@
 #include "vtkUnstructuredGrid.h"
 #include "vtkVersionMacros.h"
 
+#include <utility>
 #include <vector>
 
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 4, 0)
@@ -42,6 +43,26 @@ inline const char* CellClassName(int cellType)
 #else
   return vtkCellTypes::GetClassNameFromTypeId(cellType);
 #endif
+}
+
+/// The arrays holding a grid's polyhedron faces, each with the object whose
+/// modification time covers it (null arrays where the grid has none; always
+/// as many).
+inline std::vector<std::pair<vtkDataArray*, vtkObject*>> PolyhedronFaceArrays(
+  vtkUnstructuredGrid* grid)
+{
+  std::vector<std::pair<vtkDataArray*, vtkObject*>> arrays;
+#if PPIRAY_VTK_HAS_GLAD
+  for (vtkCellArray* cells : { grid->GetPolyhedronFaces(), grid->GetPolyhedronFaceLocations() })
+  {
+    arrays.emplace_back(cells ? cells->GetOffsetsArray() : nullptr, cells);
+    arrays.emplace_back(cells ? cells->GetConnectivityArray() : nullptr, cells);
+  }
+#else
+  arrays.emplace_back(grid->GetFaces(), grid->GetFaces());
+  arrays.emplace_back(grid->GetFaceLocations(), grid->GetFaceLocations());
+#endif
+  return arrays;
 }
 
 /// `output` takes `types` and `cells` and keeps the polyhedron faces of

@@ -2,25 +2,22 @@
 
 #include "ppirayLinearCellKinds.h"
 #include "ppirayMapperModes.h"
-#include "vtkCellArray.h"
 #include "vtkPPIRayGridInput.h"
-#include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
-
-#include <algorithm>
 
 //------------------------------------------------------------------------------
 vtkPPIRayMeshCells::Status vtkPPIRayMeshCells::Update(vtkUnstructuredGridBase* input, bool native,
   int layout, vtkPPIRayGridInput& grid, vtkWindow* window, vtkObject* reporter)
 {
-  auto* unstructured = vtkUnstructuredGrid::SafeDownCast(input);
-  vtkMTimeType sourceTime = input->GetPoints() ? input->GetPoints()->GetMTime() : 0;
-  sourceTime = std::max(sourceTime, unstructured && unstructured->GetCells()
-                                      ? unstructured->GetCells()->GetMTime()
-                                      : input->GetMTime());
-  if (this->Input == input && sourceTime <= this->Time.GetMTime() && this->BuiltNative == native &&
-      this->BuiltLayout == layout)
+  const ppiray::GridGeometryKey::Match match = this->Key.Update(input);
+  const bool sameModes = this->BuiltNative == native && this->BuiltLayout == layout;
+  if (match != ppiray::GridGeometryKey::Match::Changed && sameModes)
   {
+    if (this->Input != input || match == ppiray::GridGeometryKey::Match::SameContent)
+    {
+      ++this->ReuseCount; // a grid object or arrays seen for the first time, same geometry
+    }
+    this->Input = input;
     return this->Valid ? Status::Current : Status::Failed;
   }
   this->Input = input;

@@ -6,12 +6,15 @@
  * natively when the mode asks for it and the mesh allows it
  * (vtkPPIRayHexahedralCellBuffers), else every cell split into tetrahedra
  * in the chosen layout (vtkPPIRayTetrahedralCellBuffers). Rebuilt when the
- * grid's points or cells, or the modes, change. Internal to
- * PPIRay::Rendering.
+ * grid's points or cells, or the modes, change; kept for a new grid object
+ * with the same points and cells (ppiray::GridGeometryKey: the same arrays,
+ * or arrays with the same values), as a time series hands over at every
+ * step. Internal to PPIRay::Rendering.
  */
 #ifndef vtkPPIRayMeshCells_h
 #define vtkPPIRayMeshCells_h
 
+#include "ppirayGridGeometryKey.h" // for ppiray::GridGeometryKey
 #include "vtkPPIRayHexahedralCellBuffers.h"
 #include "vtkPPIRayTetrahedralCellBuffers.h"
 #include "vtkTimeStamp.h" // for vtkTimeStamp
@@ -54,6 +57,8 @@ public:
   vtkTetrahedralCellTextures* GetTetrahedralTextures();
   int GetGeometryUploadCount() const;
   int GetFieldUploadCount() const;
+  // Updates that kept the cells for a grid object or arrays not seen before.
+  int GetGeometryReuseCount() const { return this->ReuseCount; }
   ///@}
 
   void ReleaseGraphicsResources(vtkWindow* window);
@@ -66,6 +71,8 @@ private:
   vtkPPIRayHexahedralCellBuffers Native;
   vtkPPIRayCellBuffers* Buffers = nullptr; // the kind the mesh is rendered as
   vtkUnstructuredGridBase* Input = nullptr;
+  ppiray::GridGeometryKey Key; // the geometry the cells were built from
+  int ReuseCount = 0;
   vtkTimeStamp Time;
   bool BuiltNative = false; // built with the native modes
   int BuiltLayout = 0;      // the tetrahedron layout built

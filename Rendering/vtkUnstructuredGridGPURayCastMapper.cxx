@@ -202,6 +202,7 @@ void vtkUnstructuredGridGPURayCastMapper::CollectStatistics()
   out.NumberOfUnlinkedBoundaryFaces = split ? split->GetNumberOfUnlinkedFaces() : 0;
   out.GeometryUploadCount = in.Mesh.GetGeometryUploadCount();
   out.FieldUploadCount = in.Mesh.GetFieldUploadCount();
+  out.GeometryReuseCount = in.Mesh.GetGeometryReuseCount();
   out.TransferFunctionUploadCount = in.TransferFunction.GetUploadCount();
   out.PreIntegrationTableBuildTime = in.Integrator ? in.Integrator->GetTableBuildTime() : 0.0;
   out.GPUMemorySize = static_cast<vtkIdType>(

@@ -47,6 +47,7 @@ void vtkUnstructuredGridGPURayCastStatistics::PrintSelf(ostream& os, vtkIndent i
   os << indent << "NumberOfSplitBoundaryFaces: " << this->NumberOfSplitBoundaryFaces << "\n";
   os << indent << "NumberOfUnlinkedBoundaryFaces: " << this->NumberOfUnlinkedBoundaryFaces << "\n";
   os << indent << "GeometryUploadCount: " << this->GeometryUploadCount << "\n";
+  os << indent << "GeometryReuseCount: " << this->GeometryReuseCount << "\n";
   os << indent << "FieldUploadCount: " << this->FieldUploadCount << "\n";
   os << indent << "TransferFunctionUploadCount: " << this->TransferFunctionUploadCount << "\n";
   os << indent << "PreIntegrationTableBuildTime: " << this->PreIntegrationTableBuildTime << "\n";

@@ -62,6 +62,13 @@ public:
   vtkGetMacro(TransferFunctionUploadCount, int);
   ///@}
 
+  /**
+   * How many times the cells were kept for a grid object, or arrays, not
+   * seen before that hold the same points and cells (a time series' next
+   * step): only the field was built again.
+   */
+  vtkGetMacro(GeometryReuseCount, int);
+
   /** Seconds the last FULL_PRE_INTEGRATION table build took (0 if none yet). */
   vtkGetMacro(PreIntegrationTableBuildTime, double);
 
@@ -154,6 +161,7 @@ private:
   int GeometryUploadCount = 0;
   int FieldUploadCount = 0;
   int TransferFunctionUploadCount = 0;
+  int GeometryReuseCount = 0;
   double PreIntegrationTableBuildTime = 0.0;
   vtkIdType GPUMemorySize = 0;
   vtkIdType CellArrayBytes = 0;

@@ -21,46 +21,61 @@ import time
 import numpy as np
 
 
-def tetrahedral_block(n):
-    """The unstructured grid of n^3 voxels in [-1, 1]^3, 6 tetrahedra each."""
+def block_grid(n, cell_type, corners):
+    """The unstructured grid of the cube [-1, 1]^3 on (n + 1)^3 points, cells
+    of `cell_type` with point ids `corners` (cells x corners), the scalar
+    s = sin(3x) cos(2y) + z^2 at the points."""
     from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
     from vtkmodules.vtkCommonCore import vtkPoints
-    from vtkmodules.vtkCommonDataModel import VTK_TETRA, vtkCellArray, vtkUnstructuredGrid
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkUnstructuredGrid
     axis = np.linspace(-1.0, 1.0, n + 1)
     z, y, x = np.meshgrid(axis, axis, axis, indexing="ij")
     coordinates = np.stack([x.ravel(), y.ravel(), z.ravel()], axis=1)
     points = vtkPoints()
     points.SetData(numpy_to_vtk(coordinates.astype(np.float64), deep=1))
-    # Voxel corners: bit 0 x, bit 1 y, bit 2 z; the six tetrahedra around
-    # the diagonal 0-7 walk the corners through paths 0 -> a -> b -> 7.
-    i = np.arange(n)
-    k3, j3, i3 = np.meshgrid(i, i, i, indexing="ij")
-    base = (k3 * (n + 1) + j3) * (n + 1) + i3
-    offset = [0, 1, n + 1, n + 2, (n + 1) ** 2, (n + 1) ** 2 + 1,
-              (n + 1) ** 2 + n + 1, (n + 1) ** 2 + n + 2]
-    paths = [(0, 1, 3, 7), (0, 1, 5, 7), (0, 2, 3, 7), (0, 2, 6, 7), (0, 4, 5, 7), (0, 4, 6, 7)]
-    tets = np.empty((base.size, 6, 4), dtype=np.int64)
-    flat = base.ravel()
-    for t, path in enumerate(paths):
-        for c, corner in enumerate(path):
-            tets[:, t, c] = flat + offset[corner]
-    # Orientation: half the paths wind negatively; swap two corners there.
-    for t, path in enumerate(paths):
-        if t in (1, 2, 5):
-            tets[:, t, [1, 2]] = tets[:, t, [2, 1]]
-    tets = tets.reshape(-1, 4)
     cells = vtkCellArray()
-    offsets = np.arange(0, 4 * len(tets) + 1, 4, dtype=np.int64)
+    width = corners.shape[1]
+    offsets = np.arange(0, width * len(corners) + 1, width, dtype=np.int64)
     cells.SetData(numpy_to_vtkIdTypeArray(offsets, deep=1),
-                  numpy_to_vtkIdTypeArray(tets.ravel(), deep=1))
+                  numpy_to_vtkIdTypeArray(corners.astype(np.int64).ravel(), deep=1))
     grid = vtkUnstructuredGrid()
     grid.SetPoints(points)
-    grid.SetCells(VTK_TETRA, cells)
+    grid.SetCells(cell_type, cells)
     s = np.sin(3.0 * coordinates[:, 0]) * np.cos(2.0 * coordinates[:, 1]) + coordinates[:, 2] ** 2
     array = numpy_to_vtk(s.astype(np.float64), deep=1)
     array.SetName("s")
     grid.GetPointData().SetScalars(array)
     return grid
+
+
+def voxel_corners(n):
+    """Point ids of the 8 corners of each of the n^3 voxels (bit 0 x, bit 1 y,
+    bit 2 z), as (voxels, 8)."""
+    i = np.arange(n)
+    k3, j3, i3 = np.meshgrid(i, i, i, indexing="ij")
+    base = ((k3 * (n + 1) + j3) * (n + 1) + i3).ravel()
+    m = n + 1
+    offset = [0, 1, m, m + 1, m * m, m * m + 1, m * m + m, m * m + m + 1]
+    return np.stack([base + o for o in offset], axis=1)
+
+
+def tetrahedral_block(n):
+    """The unstructured grid of n^3 voxels in [-1, 1]^3, 6 tetrahedra each."""
+    from vtkmodules.vtkCommonDataModel import VTK_TETRA
+    corners = voxel_corners(n)
+    # The six tetrahedra around the diagonal 0-7 walk the corners through
+    # paths 0 -> a -> b -> 7; half the paths wind negatively: two corners
+    # swapped there.
+    paths = [(0, 1, 3, 7), (0, 5, 1, 7), (0, 3, 2, 7), (0, 2, 6, 7), (0, 4, 5, 7), (0, 6, 4, 7)]
+    tets = np.stack([corners[:, list(path)] for path in paths], axis=1).reshape(-1, 4)
+    return block_grid(n, VTK_TETRA, tets)
+
+
+def hexahedral_block(n):
+    """The unstructured grid of n^3 hexahedra in [-1, 1]^3."""
+    from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON
+    corners = voxel_corners(n)
+    return block_grid(n, VTK_HEXAHEDRON, corners[:, [0, 1, 3, 2, 4, 5, 7, 6]])
 
 
 def peak_gigabytes():

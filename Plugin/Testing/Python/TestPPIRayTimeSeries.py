@@ -1,0 +1,129 @@
+"""pvbatch: a time series stepped through "PPIRay Volume" with ParaView's
+animation scene.
+
+Two series of four steps, each a .pvd of .vtu files read back by ParaView's
+reader (new arrays at every step, as from any reader): the same mesh at
+every step, the field moving (s = sin(3x + 0.4 k) cos(2y) + z^2, step k):
+ 1. 2,880 tetrahedra (ParaView's usual path: its preprocessor hands the
+    mapper a new grid at every step);
+ 2. 512 hexahedra, rendered natively (passed unsplit).
+At every step: the geometry was built and uploaded once for the whole series
+(the mapper recognized the points and cells: GetGeometryReuseCount() grows
+by one per step), the field once per step (counted from the first step: the
+view's first render and the first step's may each read the data); the screenshot against
+the CPU reference renderer of that step's grid: p99 at most 1/255 and max
+at most 2/255 over the covered pixels (the 8-bit rounding of the screenshot
+and of the background blend, 0.5 each), at least a quarter of the view
+covered; and each step's image differs from the one before (the field
+moved).
+
+Usage: pvbatch TestPPIRayTimeSeries.py PLUGIN TEMPORARY_DIR
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import ppiray_pvtest as pt  # noqa: E402
+
+from paraview.simple import GetAnimationScene, OpenDataFile, Render  # noqa: E402
+
+SIZE = (200, 180)
+STEPS = 4
+RGB = [-1.0, 0.1, 0.1, 0.8, 0.5, 0.9, 0.9, 0.2, 2.0, 0.9, 0.1, 0.1]
+OPACITY = [-1.0, 0.0, 0.5, 0.0, 2.0, 0.6, 0.5, 0.0]
+
+
+def write_series(folder, hexahedra):
+    """The series as step<k>.vtu files and a .pvd naming them; its path."""
+    import math
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    from vtkmodules.vtkFiltersCore import vtkAppendFilter
+    from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
+    os.makedirs(folder, exist_ok=True)
+    image = vtkImageData()
+    image.SetDimensions(9, 9, 9)
+    image.SetOrigin(-1.0, -1.0, -1.0)
+    image.SetSpacing(0.25, 0.25, 0.25)
+    if hexahedra:
+        cells = vtkAppendFilter()
+    else:
+        cells = vtkDataSetTriangleFilter()
+    cells.SetInputData(image)
+    cells.Update()
+    grid = cells.GetOutput()
+    entries = []
+    for k in range(STEPS):
+        values = vtkDoubleArray()
+        values.SetName("s")
+        for p in range(grid.GetNumberOfPoints()):
+            x, y, z = grid.GetPoint(p)
+            values.InsertNextValue(math.sin(3.0 * x + 0.4 * k) * math.cos(2.0 * y) + z * z)
+        grid.GetPointData().SetScalars(values)
+        name = "step%d.vtu" % k
+        writer = vtkXMLUnstructuredGridWriter()
+        writer.SetInputData(grid)
+        writer.SetFileName(os.path.join(folder, name))
+        writer.Write()
+        entries.append('    <DataSet timestep="%d" file="%s"/>' % (k, name))
+    path = os.path.join(folder, "series.pvd")
+    with open(path, "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'
+                "  <Collection>\n%s\n  </Collection>\n</VTKFile>\n" % "\n".join(entries))
+    return path, grid.GetNumberOfCells()
+
+
+def step_through(path, cells, label, temporary, failures):
+    import numpy as np
+    reader = OpenDataFile(path)
+    view = pt.render_view(SIZE)
+    display = pt.show_volume(reader, view, "s", rgb_points=RGB, opacity_points=OPACITY,
+                             unit_distance=0.5)
+    scene = GetAnimationScene()
+    scene.UpdateAnimationUsingDataTimeSteps()
+    pt.set_camera(view, (2.5, -1.8, 2.0))
+    previous = first = None
+    for k in range(STEPS):
+        scene.AnimationTime = float(k)
+        Render(view)
+        mapper = pt.mapper_of(display)
+        s = mapper.GetStatistics()
+        counts = (s.GetGeometryUploadCount(), s.GetFieldUploadCount(), s.GetGeometryReuseCount())
+        image = pt.screenshot(view, os.path.join(temporary, "TestPPIRayTimeSeries%s%d.png"
+                                                 % (label, k)))
+        covered, p99, largest = pt.against_reference(view, display, image, "s")
+        rendered = s.GetNumberOfTetrahedra() + s.GetNumberOfNativeCells()
+        print("%s step %d: %d cells rendered; geometry uploads %d, field uploads %d, geometry "
+              "reused %d; %d pixels covered, p99 %.2f, max %.2f /255 against the reference"
+              % ((label, k, rendered) + counts + (covered, p99, largest)))
+        first = first or counts
+        expected = (1, first[1] + k, first[2] + k)
+        if counts != expected:
+            failures.append("%s step %d: uploads and reuses %s, expected %s"
+                            % (label, k, counts, expected))
+        if covered < SIZE[0] * SIZE[1] // 4 or p99 > 1.0 or largest > 2.0:
+            failures.append("%s step %d: %d pixels covered, p99 %.2f, max %.2f"
+                            % (label, k, covered, p99, largest))
+        rgb = pt.read_rgb(image).astype(np.float64)
+        if previous is not None and np.abs(rgb - previous).max() < 10:
+            failures.append("%s step %d: the image did not change" % (label, k))
+        previous = rgb
+    if label == "Hexahedra" and s.GetNumberOfNativeCells() != cells:
+        failures.append("hexahedra not rendered natively (%d native cells of %d)"
+                        % (s.GetNumberOfNativeCells(), cells))
+
+
+def main(plugin, temporary):
+    pt.load_plugin(plugin)
+    failures = []
+    for label, hexahedra in (("Tetrahedra", False), ("Hexahedra", True)):
+        path, cells = write_series(os.path.join(temporary, "TestPPIRayTimeSeries" + label),
+                                   hexahedra)
+        step_through(path, cells, label, temporary, failures)
+    pt.finish(failures)
+    return 0
+
+
+if __name__ == "__main__":
+    pt.run(main, __doc__, 3)
