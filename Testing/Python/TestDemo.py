@@ -1,5 +1,6 @@
 """Module/run demo as a user meets it: the bundled mesh (default comparison:
-all), the can's hexahedra (a user file: no comparison, the first field that
+all; the first frame timed apart, each speed sentence naming the faster
+mapper by the ratio of the times printed), the can's hexahedra (a user file: no comparison, the first field that
 is not an id: cell EQPS, rendered natively; with --hexahedra subdivide:
 split), a mesh of triangles only (exit 1, "no 3D cells"), a missing file,
 an unknown array and an unknown colour map (exit 1, a message, no speed-up
@@ -33,6 +34,30 @@ def demo(*args):
     return run
 
 
+def speed_wording(out):
+    """The comparisons as the demo must word them: the first frame apart,
+    each speed sentence naming the faster mapper of the times printed, by
+    their ratio (at least 1)."""
+    problems = []
+    ours = re.search(r"PPIRay +([0-9.]+) ms/frame", out)
+    first = re.search(r"first +([0-9.]+) ms for the first frame: ([0-9.]+) ms preparing", out)
+    if not ours or not first or float(first.group(2)) > float(first.group(1)):
+        problems.append("the first frame and its preparation expected apart from ms/frame")
+    for peer, name in (("VTK PT", "projected tetrahedra"), ("VTK CPU", "VTK's CPU ray caster")):
+        line = re.search(r"%s +([0-9.]+) ms/frame.*: (PPIRay|%s) (?:is|are) ([0-9.]+)x faster on "
+                         r"this mesh here" % (peer, re.escape(name)), out)
+        if not line or not ours:
+            problems.append("%s: a speed sentence expected" % peer)
+            continue
+        mine, theirs = float(ours.group(1)), float(line.group(1))
+        faster = "PPIRay" if theirs >= mine else name
+        ratio = max(mine, theirs) / min(mine, theirs)
+        if line.group(2) != faster or abs(float(line.group(3)) - ratio) > 0.051 * ratio + 0.05:
+            problems.append("%s: '%s is %sx faster' for %.1f against %.1f ms" % (
+                peer, line.group(2), line.group(3), mine, theirs))
+    return problems
+
+
 def main(data, scratch):
     os.makedirs(scratch, exist_ok=True)
     failures = []
@@ -40,6 +65,7 @@ def main(data, scratch):
     run = demo("--out", os.path.join(scratch, "bundled.png"))
     if run.returncode != 0 or "tetrahedra" not in run.stdout or "reference" not in run.stdout:
         failures.append("the bundled mesh: exit 0, tetrahedra and the comparison expected")
+    failures += speed_wording(run.stdout)
 
     can = os.path.join(data, "can", "can.vtu")
     skipped = not os.path.exists(can)
