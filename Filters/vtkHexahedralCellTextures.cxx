@@ -184,6 +184,7 @@ int vtkHexahedralCellTextures::TriangleCorner(int kind, int f, int t, int v, boo
 bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
 {
   this->Clear();
+  ppiray::StageTimes::Laps laps(this->Stages);
   if (!grid || !grid->GetPoints() || !grid->GetCells() || !this->CollectCells(grid))
   {
     return false; // only counted: a grid of tetrahedra only, or with other cells
@@ -194,12 +195,16 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   {
     return false;
   }
+  laps.End("cells");
   this->Hidden = ppiray::HiddenCells(grid, this->CellIds);
   this->OrientCells();
   this->StoreCorners();
+  laps.End("corners");
   std::vector<vtkIdType> boundary = this->MatchFaces();
+  laps.End("adjacency");
   this->LinkSplitQuadrilaterals(boundary);
   this->ExtractBoundary(boundary, grid->GetNumberOfPoints());
+  laps.End("boundary");
   // Faces with reflex edges: the faces across them, for the march to enter
   // again where it leaves next to one (boundary triangle codes 12 h + 2 f + t).
   std::vector<int> faceOf(this->BoundaryFaces.size());
@@ -209,6 +214,7 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     this->BoundaryPoints, this->BoundaryTriangles, faceOf,
     [](int face) { return static_cast<size_t>(8 * (face / 6) + face % 6); }, ReentryFace(),
     this->Neighbors);
+  laps.End("re-entry faces");
   this->Modified();
   return true;
 }
@@ -216,6 +222,7 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
 //------------------------------------------------------------------------------
 void vtkHexahedralCellTextures::Clear()
 {
+  this->Stages.Clear();
   this->CellIds.clear();
   this->Kinds.clear();
   this->CornerIds.clear();

@@ -39,6 +39,7 @@
 #define vtkHexahedralCellTextures_h
 
 #include "ppirayFiltersModule.h" // for export macro
+#include "ppirayStageTimes.h"    // for ppiray::StageTimes
 #include "vtkObject.h"
 
 #include <vector> // for std::vector
@@ -63,6 +64,9 @@ public:
    * hexahedron or there are other cells.
    */
   bool BuildGeometry(vtkUnstructuredGrid* grid);
+
+  /** Wall time of each stage of the last BuildGeometry(), in order. */
+  const ppiray::StageTimes& GetStageTimes() const { return this->Stages; }
 
   /**
    * Coefficients from `scalars` (point data, or cell data when `cellScalars`:
@@ -222,6 +226,7 @@ protected:
   vtkIdType NumberOfQuadraticCells = 0;
 
 private:
+  ppiray::StageTimes Stages; // of the last BuildGeometry()
   vtkHexahedralCellTextures(const vtkHexahedralCellTextures&) = delete;
   void operator=(const vtkHexahedralCellTextures&) = delete;
 };

@@ -51,6 +51,8 @@ double LongestEdge(const double* p[4])
 //------------------------------------------------------------------------------
 bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
 {
+  this->Stages.Clear();
+  ppiray::StageTimes::Laps laps(this->Stages);
   ppiray::TetrahedralSplit split;
   ppiray::SplitIntoTetrahedra(grid, /*tetrahedraOnly=*/false, split);
   this->NumberOfUnsupportedCells = split.GetNumberOfUnsupportedCells();
@@ -85,6 +87,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     return false;
   }
 
+  laps.End("tetrahedra");
   this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
   for (size_t i = 0; i < this->Added.Points.size(); ++i)
   {
@@ -114,6 +117,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     }
   }
 
+  laps.End("points");
   // Face planes: n_f outward unit normal, d_f = n_f . (face centroid).
   this->Degenerate.assign(numberOfTets, 0);
   this->FacePlanes.assign(compact ? 0 : 16 * numberOfTets, 0.0f);
@@ -182,6 +186,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->NumberOfDegenerateTetrahedra = degenerate.load();
   this->MaximumEdgeLength = maximumEdge;
   this->NumberOfInvertedTetrahedra = inverted.load();
+  laps.End("planes");
 
   // Neighbours: the flat tetrahedra between the others, folded faces marked.
   vtkNew<vtkUnstructuredGridCellAdjacency> adjacency;
@@ -199,6 +204,8 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     const bool inPlace = folded && adjacency->WalksBackInPlace(t, n);
     this->Neighbors[k] = n < 0 ? NoNeighbor() : NeighborCode(n, neighborFaces[k], folded, inPlace);
   }
+
+  laps.End("adjacency");
 
   // Boundary triangles wound outward, over a compact set of points, but for
   // those joined to the imaginary cells on them.
@@ -237,11 +244,14 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     this->BoundaryFaces.push_back(static_cast<int>(4 * t + f));
   }
 
+  laps.End("boundary");
+
   // Faces with reflex edges: the faces across them, for the march to enter
   // again where it leaves next to one.
   this->NumberOfReentryFaces = ppiray::ListReentryFaces(
     this->BoundaryPoints, this->BoundaryTriangles, this->BoundaryFaces,
     [](int face) { return static_cast<size_t>(face); }, ReentryFace(), this->Neighbors);
+  laps.End("re-entry faces");
   this->Modified();
   return true;
 }

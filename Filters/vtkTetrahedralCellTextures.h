@@ -40,6 +40,7 @@
 
 #include "ppirayFiltersModule.h" // for export macro
 #include "ppirayPolyhedra.h"     // for ppiray::AddedPoints
+#include "ppirayStageTimes.h"    // for ppiray::StageTimes
 #include "vtkObject.h"
 
 #include <vector> // for std::vector
@@ -74,6 +75,9 @@ public:
    * tetrahedron is left.
    */
   bool BuildGeometry(vtkUnstructuredGrid* grid);
+
+  /** Wall time of each stage of the last BuildGeometry(), in order. */
+  const ppiray::StageTimes& GetStageTimes() const { return this->Stages; }
 
   /**
    * Linear field per tetrahedron from `scalars` (point data when `cellScalars`
@@ -283,6 +287,7 @@ protected:
   vtkIdType NumberOfQuadraticCells = 0;
 
 private:
+  ppiray::StageTimes Stages; // of the last BuildGeometry()
   vtkTetrahedralCellTextures(const vtkTetrahedralCellTextures&) = delete;
   void operator=(const vtkTetrahedralCellTextures&) = delete;
 };

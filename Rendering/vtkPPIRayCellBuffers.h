@@ -16,6 +16,7 @@
 #ifndef vtkPPIRayCellBuffers_h
 #define vtkPPIRayCellBuffers_h
 
+#include "ppirayStageTimes.h"       // for ppiray::StageTimes
 #include "vtkNew.h"                 // for vtkNew
 #include "vtkPPIRayBufferTexture.h" // for vtkPPIRayBufferTexture
 #include "vtkType.h"                // for vtkIdType
@@ -102,6 +103,9 @@ public:
    * cells touching a NaN value render empty (a warning counts them).
    */
   void BuildField(vtkDataArray* values, bool cellData, vtkObject* reporter);
+
+  /** Wall time of each stage of the last BuildGeometry(), in order. */
+  virtual const ppiray::StageTimes& GetGeometryStageTimes() const = 0;
 
   /** Centre of the mesh's bounds: every coordinate is relative to it. */
   virtual const double* GetOrigin() const = 0;

@@ -26,6 +26,10 @@ public:
   Features GetFeatures() const override;
   const char* GetCellName() const override;
   BuildResult BuildGeometry(vtkUnstructuredGrid* grid, vtkObject* reporter) override;
+  const ppiray::StageTimes& GetGeometryStageTimes() const override
+  {
+    return this->Cells->GetStageTimes();
+  }
   const double* GetOrigin() const override { return this->Cells->GetOrigin(); }
   vtkIdType GetNumberOfCells() const override { return this->Cells->GetNumberOfHexahedra(); }
   double GetMaximumSegmentLength() const override { return this->Cells->GetMaximumCellDiameter(); }

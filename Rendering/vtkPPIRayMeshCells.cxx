@@ -9,7 +9,10 @@
 vtkPPIRayMeshCells::Status vtkPPIRayMeshCells::Update(vtkUnstructuredGridBase* input, bool native,
   int layout, vtkPPIRayGridInput& grid, vtkWindow* window, vtkObject* reporter)
 {
+  this->Stages.Clear();
+  ppiray::StageTimes::Laps laps(this->Stages);
   const ppiray::GridGeometryKey::Match match = this->Key.Update(input);
+  laps.End("geometry key");
   const bool sameModes = this->BuiltNative == native && this->BuiltLayout == layout;
   if (match != ppiray::GridGeometryKey::Match::Changed && sameModes)
   {
@@ -26,6 +29,7 @@ vtkPPIRayMeshCells::Status vtkPPIRayMeshCells::Update(vtkUnstructuredGridBase* i
   this->Time.Modified();
   this->Valid = false;
   vtkUnstructuredGrid* valid = grid.Validated(input, reporter);
+  laps.End("validation");
   if (!valid)
   {
     return Status::Failed;
@@ -47,6 +51,7 @@ vtkPPIRayMeshCells::Status vtkPPIRayMeshCells::Update(vtkUnstructuredGridBase* i
     this->Buffers->ReleaseGraphicsResources(window);
   }
   this->Buffers = buffers;
+  this->Stages.Add(buffers->GetGeometryStageTimes());
   this->Valid = result == Result::Built;
   return this->Valid ? Status::Rebuilt : Status::Failed;
 }

@@ -45,6 +45,11 @@ public:
 
   /** The buffers the mesh is rendered with (null before the first Update()). */
   vtkPPIRayCellBuffers* GetBuffers() const { return this->Buffers; }
+  /**
+   * Wall time of each stage of the last Update(): the geometry key, and when
+   * the cells were built, the validation and the build's stages.
+   */
+  const ppiray::StageTimes& GetStageTimes() const { return this->Stages; }
   /** When the cells were last built. */
   vtkMTimeType GetMTime() const { return this->Time.GetMTime(); }
 
@@ -72,6 +77,7 @@ private:
   vtkPPIRayCellBuffers* Buffers = nullptr; // the kind the mesh is rendered as
   vtkUnstructuredGridBase* Input = nullptr;
   ppiray::GridGeometryKey Key; // the geometry the cells were built from
+  ppiray::StageTimes Stages;   // of the last Update()
   int ReuseCount = 0;
   vtkTimeStamp Time;
   bool BuiltNative = false; // built with the native modes

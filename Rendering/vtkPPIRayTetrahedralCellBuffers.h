@@ -25,6 +25,10 @@ public:
   const char* GetCellName() const override { return "tetrahedra"; }
   const char* GetSmallerLayoutHint() const override;
   BuildResult BuildGeometry(vtkUnstructuredGrid* grid, vtkObject* reporter) override;
+  const ppiray::StageTimes& GetGeometryStageTimes() const override
+  {
+    return this->Cells->GetStageTimes();
+  }
   const double* GetOrigin() const override { return this->Cells->GetOrigin(); }
   vtkIdType GetNumberOfCells() const override { return this->Cells->GetNumberOfTetrahedra(); }
   double GetMaximumSegmentLength() const override { return this->Cells->GetMaximumEdgeLength(); }

@@ -347,14 +347,22 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateCollaborators(
     in.ReleaseInTheirContext(context);
     in.Context = context;
   }
-  if (!this->UpdateCells(input, context) || !this->UpdateField(input) ||
+  const bool cells = this->UpdateCells(input, context);
+  in.Statistics->PreparationStages.Add(in.Mesh.GetStageTimes());
+  ppiray::StageTimes::Laps laps(in.Statistics->PreparationStages);
+  if (!cells || !this->UpdateField(input) ||
       !in.TransferFunction.Update(vol->GetProperty(), in.Field.GetShift(), this))
   {
     return false;
   }
+  laps.End("field");
   in.Cells->SetMaximumBufferTexels(static_cast<size_t>(this->MaximumBufferTexels));
-  return in.Cells->Upload(context, this) && in.TransferFunction.Upload(context, this) &&
-         this->UpdateIntegrator(context);
+  const bool uploaded =
+    in.Cells->Upload(context, this) && in.TransferFunction.Upload(context, this);
+  laps.End("upload");
+  const bool integrator = uploaded && this->UpdateIntegrator(context);
+  laps.End("integration tables");
+  return integrator;
 }
 
 //------------------------------------------------------------------------------
@@ -367,6 +375,7 @@ void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolum
   statistics.NumberOfPeels = statistics.NumberOfContinuations = 0;
   statistics.NumberOfCellSteps = 0;
   statistics.PreparationTime = 0.0;
+  statistics.PreparationStages.Clear();
   vtkUnstructuredGridBase* input = this->FrameInput(ren, vol);
   auto* context = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   if (!input)

@@ -31,6 +31,28 @@ int vtkUnstructuredGridGPURayCastStatistics::GetNumberOfPasses(int kind)
 }
 
 //------------------------------------------------------------------------------
+int vtkUnstructuredGridGPURayCastStatistics::GetNumberOfPreparationStages()
+{
+  return static_cast<int>(this->PreparationStages.Get().size());
+}
+
+//------------------------------------------------------------------------------
+const char* vtkUnstructuredGridGPURayCastStatistics::GetPreparationStageName(int stage)
+{
+  return stage >= 0 && stage < this->GetNumberOfPreparationStages()
+           ? this->PreparationStages.Get()[stage].Name.c_str()
+           : nullptr;
+}
+
+//------------------------------------------------------------------------------
+double vtkUnstructuredGridGPURayCastStatistics::GetPreparationStageTime(int stage)
+{
+  return stage >= 0 && stage < this->GetNumberOfPreparationStages()
+           ? this->PreparationStages.Get()[stage].Milliseconds
+           : 0.0;
+}
+
+//------------------------------------------------------------------------------
 const char* vtkUnstructuredGridGPURayCastStatistics::GetPassKindName(int kind)
 {
   return vtkPPIRayPassTimes::GetName(kind);

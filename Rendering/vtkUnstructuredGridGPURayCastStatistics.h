@@ -14,6 +14,7 @@
 #define vtkUnstructuredGridGPURayCastStatistics_h
 
 #include "ppirayRenderingModule.h" // for export macro
+#include "ppirayStageTimes.h"      // for ppiray::StageTimes
 #include "vtkObject.h"
 
 class PPIRAYRENDERING_EXPORT vtkUnstructuredGridGPURayCastStatistics : public vtkObject
@@ -116,6 +117,20 @@ public:
    */
   vtkGetMacro(PreparationTime, double);
 
+  ///@{
+  /**
+   * The stages of the last frame's preparation, in order, with their CPU
+   * milliseconds: "geometry key" (whether the points and cells changed),
+   * and when the cells were built "validation" and the cell layout's stages
+   * (e.g. "tetrahedra", "planes", "adjacency", "boundary"), then "field"
+   * (scalars and transfer function), "upload" (cells and transfer function
+   * to the GPU) and "integration tables" (the integration mode's tables).
+   */
+  int GetNumberOfPreparationStages();
+  const char* GetPreparationStageName(int stage);
+  double GetPreparationStageTime(int stage);
+  ///@}
+
   /**
    * The kinds of pass a frame draws (the mapper's TimePasses): the opaque
    * depth copy and target clears, the near-plane sections (camera inside),
@@ -162,6 +177,7 @@ private:
   int FieldUploadCount = 0;
   int TransferFunctionUploadCount = 0;
   int GeometryReuseCount = 0;
+  ppiray::StageTimes PreparationStages;
   double PreIntegrationTableBuildTime = 0.0;
   vtkIdType GPUMemorySize = 0;
   vtkIdType CellArrayBytes = 0;

@@ -15,7 +15,8 @@ frame (render call to return, size x size):
   new grid, copied  the same with deep copies of the points and cells
   points moved      a new grid, same cells, every point moved (deforming)
 PPIRay's columns add its CPU preparation (statistics) and whether the
-geometry was kept (GetGeometryReuseCount()). A benchmark, not a test: its
+geometry was kept (GetGeometryReuseCount()); a second table splits the
+preparation by stage (GetPreparationStageName/Time). A benchmark, not a test: its
 numbers go in Documentation/results.md with the command that made them.
 """
 import argparse
@@ -71,7 +72,9 @@ def worker(args):
         if ours:
             s = mapper.GetStatistics()
             entry.update(prepare=s.GetPreparationTime(), reused=s.GetGeometryReuseCount(),
-                         uploads=s.GetGeometryUploadCount())
+                         uploads=s.GetGeometryUploadCount(),
+                         stages=[(s.GetPreparationStageName(i), s.GetPreparationStageTime(i))
+                                 for i in range(s.GetNumberOfPreparationStages())])
         result[row] = entry
 
     timed("first frame")
@@ -160,6 +163,19 @@ def main():
                 else:
                     cells_out.append("%.0f" % e["ms"])
             print("| %s | %s |" % (row, " | ".join(cells_out)))
+        if "ppiray" in results:
+            print("\nPPIRay's CPU preparation by stage (statistics), ms\n")
+            rows = [r for r in ROWS if r != "steady frame"]
+            print("| stage | " + " | ".join(rows) + " |")
+            print("|---|" + "---:|" * len(rows))
+            names = []
+            for row in rows:
+                names += [n for n, _ in results["ppiray"][row]["stages"] if n not in names]
+            for name in names:
+                print("| %s | %s |" % (name, " | ".join(
+                    "%.0f" % dict(results["ppiray"][row]["stages"]).get(name, 0.0)
+                    if name in dict(results["ppiray"][row]["stages"]) else ""
+                    for row in rows)))
     return 0
 
 

@@ -13,6 +13,9 @@
 //     differs from step 4's;
 //  6. the field of step 5's grid as another grid shares it (same arrays):
 //     nothing built, nothing uploaded.
+// At every step the statistics name the preparation's stages, each timed
+// (finite, not negative): the cells' stages ("validation", "adjacency")
+// only where the cells were built, "geometry key" and "field" always.
 
 #include "PPIRayImageCompare.h"
 #include "PPIRayTestScenes.h"
@@ -21,8 +24,10 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
+#include <cmath>
 #include <functional>
 #include <iostream>
+#include <set>
 #include <string>
 
 namespace
@@ -91,6 +96,42 @@ int RenderAgainstFresh(ppiray_test::Scene& scene, vtkUnstructuredGridGPURayCastM
   return 0;
 }
 
+// The number of errors in the statistics' stages of the last frame: each
+// timed, finite and not negative; "validation" and "adjacency" there exactly
+// when the cells were built.
+int CheckStages(vtkUnstructuredGridGPURayCastStatistics* s, bool built, const std::string& step)
+{
+  int errors = 0;
+  std::set<std::string> names;
+  std::cout << "  stages:";
+  for (int i = 0; i < s->GetNumberOfPreparationStages(); ++i)
+  {
+    const double ms = s->GetPreparationStageTime(i);
+    names.insert(s->GetPreparationStageName(i));
+    std::cout << " " << s->GetPreparationStageName(i) << " " << ms << " ms;";
+    if (!std::isfinite(ms) || ms < 0.0)
+    {
+      std::cerr << "FAILED: " << step << ": stage " << i << " took " << ms << " ms\n";
+      ++errors;
+    }
+  }
+  std::cout << "\n";
+  for (const char* always : { "geometry key", "field", "upload" })
+  {
+    errors += names.count(always) == 1 ? 0 : 1;
+  }
+  for (const char* cells : { "validation", "adjacency" })
+  {
+    errors += (names.count(cells) == 1) == built ? 0 : 1;
+  }
+  if (errors != 0)
+  {
+    std::cerr << "FAILED: " << step << ": the stages do not match a "
+              << (built ? "rebuild" : "reuse") << "\n";
+  }
+  return errors;
+}
+
 int RunSeries(bool hexahedra)
 {
   const int n[3] = { 5, 5, 5 };
@@ -104,9 +145,12 @@ int RunSeries(bool hexahedra)
   const char* kind = hexahedra ? "hexahedra" : "tetrahedra";
 
   int errors = 0;
+  int built = 0;
   auto expect = [&](int geometry, int field, int reused, const std::string& step)
   {
     vtkUnstructuredGridGPURayCastStatistics* s = mapper->GetStatistics();
+    errors += CheckStages(s, geometry != built, std::string(kind) + ", " + step);
+    built = geometry;
     std::cout << kind << ", " << step << ": geometry uploads " << s->GetGeometryUploadCount()
               << ", field uploads " << s->GetFieldUploadCount() << ", geometry reused "
               << s->GetGeometryReuseCount() << "\n";

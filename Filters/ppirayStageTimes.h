@@ -1,0 +1,104 @@
+/**
+ * @file   ppirayStageTimes.h
+ * @brief  wall milliseconds of the named stages of a computation, in order
+ *
+ * The preparation of a frame (geometry key, validation, split, adjacency,
+ * boundary, field, upload ...) reported stage by stage: each stage is timed
+ * by a Scope from its creation to its end, or by Laps (from the last lap to
+ * this one); a stage timed twice adds up.
+ */
+#ifndef ppirayStageTimes_h
+#define ppirayStageTimes_h
+
+#include <chrono>  // for std::chrono::steady_clock
+#include <string>  // for std::string
+#include <utility> // for std::move
+#include <vector>  // for std::vector
+
+namespace ppiray
+{
+class StageTimes
+{
+public:
+  struct Stage
+  {
+    std::string Name;
+    double Milliseconds;
+  };
+
+  /** Times the stage `name` from its construction to its destruction. */
+  class Scope
+  {
+  public:
+    Scope(StageTimes& times, std::string name)
+      : Times(times)
+      , Name(std::move(name))
+      , Start(std::chrono::steady_clock::now())
+    {
+    }
+    ~Scope()
+    {
+      const std::chrono::duration<double, std::milli> elapsed =
+        std::chrono::steady_clock::now() - this->Start;
+      this->Times.Add(this->Name, elapsed.count());
+    }
+    Scope(const Scope&) = delete;
+    Scope& operator=(const Scope&) = delete;
+
+  private:
+    StageTimes& Times;
+    std::string Name;
+    std::chrono::steady_clock::time_point Start;
+  };
+
+  /** Consecutive stages: End(name) closes the one begun at the last End(). */
+  class Laps
+  {
+  public:
+    explicit Laps(StageTimes& times)
+      : Times(times)
+      , Start(std::chrono::steady_clock::now())
+    {
+    }
+    void End(const std::string& name)
+    {
+      const auto now = std::chrono::steady_clock::now();
+      this->Times.Add(name, std::chrono::duration<double, std::milli>(now - this->Start).count());
+      this->Start = now;
+    }
+
+  private:
+    StageTimes& Times;
+    std::chrono::steady_clock::time_point Start;
+  };
+
+  /** `milliseconds` more for stage `name` (appended if new). */
+  void Add(const std::string& name, double milliseconds)
+  {
+    for (Stage& stage : this->Stages)
+    {
+      if (stage.Name == name)
+      {
+        stage.Milliseconds += milliseconds;
+        return;
+      }
+    }
+    this->Stages.push_back({ name, milliseconds });
+  }
+  /** Every stage of `other`, after these. */
+  void Add(const StageTimes& other)
+  {
+    for (const Stage& stage : other.Stages)
+    {
+      this->Add(stage.Name, stage.Milliseconds);
+    }
+  }
+  void Clear() { this->Stages.clear(); }
+  const std::vector<Stage>& Get() const { return this->Stages; }
+
+private:
+  std::vector<Stage> Stages;
+};
+}
+
+#endif
