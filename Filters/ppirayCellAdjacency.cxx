@@ -8,6 +8,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <memory>
 
 namespace
 {
@@ -51,8 +52,8 @@ FaceKey SortedFace(const CellFaceMesh& mesh, vtkIdType cell, int f)
   return key;
 }
 
-// Fewer than three distinct point ids: the face has no area.
-bool IsZeroArea(const FaceKey& key)
+// The number of distinct point ids of a face.
+int DistinctIds(const FaceKey& key)
 {
   const int first = key[0] < 0 ? 1 : 0;
   int distinct = 1;
@@ -60,7 +61,13 @@ bool IsZeroArea(const FaceKey& key)
   {
     distinct += key[i] != key[i - 1] ? 1 : 0;
   }
-  return distinct < 3;
+  return distinct;
+}
+
+// Fewer than three distinct point ids: the face has no area.
+bool IsZeroArea(const FaceKey& key)
+{
+  return DistinctIds(key) < 3;
 }
 
 // The plane the cells on a face are sided against (SideOfFace): a
@@ -259,16 +266,66 @@ bool FaceHasKey(const CellFaceMesh& mesh, vtkIdType cell, int g, const FaceKey& 
   return SortedFace(mesh, cell, g) == key; // (0, 1, 1, 0) is not (0, 1, 2, 4)
 }
 
+// Which corners of a cell hold one of the key's point ids (bit v: corner v)
+// and which of the key's entries a corner holds (bit i: key[i]).
+struct KeyCorners
+{
+  unsigned Corners = 0;
+  unsigned Entries = 0;
+};
+
+KeyCorners CornersOnKey(const CellFaceTable& table, const vtkIdType* corners, const FaceKey& key)
+{
+  KeyCorners on;
+  for (int v = 0; v < table.Corners; ++v)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      const unsigned equal = corners[v] == key[i] ? 1u : 0u;
+      on.Corners |= equal << v;
+      on.Entries |= equal << i;
+    }
+  }
+  return on;
+}
+
+// The corners of face g, as bits.
+unsigned FaceCorners(const CellFaceTable& table, int g)
+{
+  unsigned mask = 0;
+  for (int v = 0; v < FaceSize(table, g); ++v)
+  {
+    mask |= 1u << table.Face[g][v];
+  }
+  return mask;
+}
+
+int PopCount(unsigned mask)
+{
+  int count = 0;
+  for (; mask != 0; mask &= mask - 1)
+  {
+    ++count;
+  }
+  return count;
+}
+
 // The cell faces on the face of cell c's face f (sorted ids `key`), by cell
 // and face (Side 0), scanned around the face's point with the fewest cells;
-// false, with the scan cut short, where one comes before (c, f).
+// false, with the scan cut short, where one comes before (c, f). A cell
+// holding each of the key's distinct ids at one corner has a face on the key
+// where that face's corners are exactly those; where ids repeat (in the key
+// or in the cell), every face is compared by ids.
 bool CellFacesFrom(const CellFaceMesh& mesh, vtkIdType c, int f, const FaceKey& key,
   const std::vector<vtkIdType>& offsets, const std::vector<vtkIdType>& links,
   std::vector<FaceEntry>& entries)
 {
+  const int first = key[0] < 0 ? 1 : 0;
+  const int distinct = DistinctIds(key);
+  const bool keyDistinct = distinct == 4 - first;
+  const unsigned allEntries = first == 0 ? 0xFu : 0xEu;
   // The cells around the face's two points with the fewest cells (merged
   // by cell id), then those with its other points too.
-  const int first = key[0] < 0 ? 1 : 0;
   std::array<vtkIdType, 4> byDegree = key;
   std::sort(byDegree.begin() + first, byDegree.end(),
     [&](vtkIdType p, vtkIdType q)
@@ -292,16 +349,18 @@ bool CellFacesFrom(const CellFaceMesh& mesh, vtkIdType c, int f, const FaceKey& 
     for (; b < bEnd && *b == other; ++b)
     {
     }
-    const vtkIdType* corners = mesh.CornerIds + mesh.CornerStride * other;
-    const vtkIdType* end = corners + TableOf(mesh, other).Corners;
-    if (std::any_of(byDegree.begin() + first + 2, byDegree.end(),
-          [&](vtkIdType p) { return std::find(corners, end, p) == end; }))
+    const CellFaceTable& table = TableOf(mesh, other);
+    const KeyCorners on = CornersOnKey(table, mesh.CornerIds + mesh.CornerStride * other, key);
+    if (on.Entries != allEntries)
     {
       continue;
     }
-    for (int g = 0; g < TableOf(mesh, other).Faces; ++g)
+    const bool byCorners = keyDistinct && PopCount(on.Corners) == distinct;
+    for (int g = 0; g < table.Faces; ++g)
     {
-      if ((other != c || g != f) && FaceHasKey(mesh, other, g, key))
+      const bool onFace =
+        byCorners ? FaceCorners(table, g) == on.Corners : FaceHasKey(mesh, other, g, key);
+      if (onFace && (other != c || g != f))
       {
         if (other < c || (other == c && g < f))
         {
@@ -385,6 +444,9 @@ CellAdjacency MatchCellFaces(const CellFaceMesh& mesh)
   result.Folded.assign(slots, 0);
   std::vector<unsigned char> zeroArea(slots, 0), hiddenFace(slots, 0);
   std::atomic<vtkIdType> nonManifold(0), folded(0);
+  // Cell faces already written, skipped when their own turn comes (a face
+  // whose writer has not yet been reached is matched again, and left to it).
+  std::unique_ptr<std::atomic<unsigned char>[]> matched(new std::atomic<unsigned char>[slots]());
 
   // Each face is matched once, by the first of its cell faces (by cell,
   // then face), which writes every cell face on it: no two threads write
@@ -400,6 +462,10 @@ CellAdjacency MatchCellFaces(const CellFaceMesh& mesh)
     {
       for (int f = 0; f < TableOf(mesh, c).Faces; ++f)
       {
+        if (matched[mesh.FaceSlots * c + f].load(std::memory_order_relaxed))
+        {
+          continue; // written by the first cell face on it
+        }
         const FaceKey key = SortedFace(mesh, c, f);
         if (IsZeroArea(key))
         {
@@ -426,6 +492,7 @@ CellAdjacency MatchCellFaces(const CellFaceMesh& mesh)
         {
           const vtkIdType slot = mesh.FaceSlots * entries[i].Cell + entries[i].Face;
           hiddenFace[slot] = hidden[i];
+          matched[slot].store(1, std::memory_order_relaxed);
           if (partner[i] < 0)
           {
             continue;

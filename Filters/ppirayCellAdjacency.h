@@ -10,8 +10,12 @@
  *
  * Faces are matched by their point ids: a triangle with a triangle, a
  * quadrilateral with a quadrilateral. Point-to-cell links are built by a
- * counting sort; every face scans the cells around its point with fewest of
- * them: O(cells) for bounded vertex degree, parallel over cells with OpenMP.
+ * counting sort; a face is matched by the first of its cell faces (by
+ * cell, then face), which merges the cells around its two points with the
+ * fewest of them and writes every cell face on it; the others, once
+ * written, are skipped. O(cells) for bounded vertex degree, parallel over
+ * cells with OpenMP. A cell is on a face where it holds each of the face's
+ * point ids; which of its faces, by the bits of its corners on them.
  *
  * Real meshes share a face between more than two cells (zero-volume cells
  * between two triangulations of a quadrilateral or on a face, a hexahedron
