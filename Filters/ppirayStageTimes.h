@@ -5,15 +5,20 @@
  * The preparation of a frame (geometry key, validation, split, adjacency,
  * boundary, field, upload ...) reported stage by stage: each stage is timed
  * by a Scope from its creation to its end, or by Laps (from the last lap to
- * this one); a stage timed twice adds up.
+ * this one); a stage timed twice adds up. Laps can also report progress
+ * (ProgressEvents()).
  */
 #ifndef ppirayStageTimes_h
 #define ppirayStageTimes_h
 
-#include <chrono>  // for std::chrono::steady_clock
-#include <string>  // for std::string
-#include <utility> // for std::move
-#include <vector>  // for std::vector
+#include "vtkCommand.h" // for vtkCommand::ProgressEvent
+#include "vtkObject.h"  // for vtkObject::InvokeEvent
+
+#include <chrono>     // for std::chrono::steady_clock
+#include <functional> // for std::function
+#include <string>     // for std::string
+#include <utility>    // for std::move
+#include <vector>     // for std::vector
 
 namespace ppiray
 {
@@ -51,12 +56,16 @@ public:
     std::chrono::steady_clock::time_point Start;
   };
 
-  /** Consecutive stages: End(name) closes the one begun at the last End(). */
+  /**
+   * Consecutive stages: End(name) closes the one begun at the last End(),
+   * then calls `onLap` (if any) with the number of stages ended so far.
+   */
   class Laps
   {
   public:
-    explicit Laps(StageTimes& times)
+    explicit Laps(StageTimes& times, std::function<void(int)> onLap = {})
       : Times(times)
+      , OnLap(std::move(onLap))
       , Start(std::chrono::steady_clock::now())
     {
     }
@@ -65,10 +74,16 @@ public:
       const auto now = std::chrono::steady_clock::now();
       this->Times.Add(name, std::chrono::duration<double, std::milli>(now - this->Start).count());
       this->Start = now;
+      if (this->OnLap)
+      {
+        this->OnLap(++this->Ended);
+      }
     }
 
   private:
     StageTimes& Times;
+    std::function<void(int)> OnLap;
+    int Ended = 0;
     std::chrono::steady_clock::time_point Start;
   };
 
@@ -99,6 +114,19 @@ public:
 private:
   std::vector<Stage> Stages;
 };
+
+/**
+ * A Laps callback: `object` invokes vtkCommand::ProgressEvent with the
+ * fraction done (a double*, laps / `stages`), as VTK's algorithms do.
+ */
+inline std::function<void(int)> ProgressEvents(vtkObject* object, int stages)
+{
+  return [object, stages](int laps)
+  {
+    double fraction = static_cast<double>(laps) / stages;
+    object->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
+  };
+}
 }
 
 #endif

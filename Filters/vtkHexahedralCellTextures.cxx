@@ -184,7 +184,7 @@ int vtkHexahedralCellTextures::TriangleCorner(int kind, int f, int t, int v, boo
 bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
 {
   this->Clear();
-  ppiray::StageTimes::Laps laps(this->Stages);
+  ppiray::StageTimes::Laps laps(this->Stages, ppiray::ProgressEvents(this, 5));
   if (!grid || !grid->GetPoints() || !grid->GetCells() || !this->CollectCells(grid))
   {
     return false; // only counted: a grid of tetrahedra only, or with other cells

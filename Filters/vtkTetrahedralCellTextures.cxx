@@ -52,7 +52,7 @@ double LongestEdge(const double* p[4])
 bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
 {
   this->Stages.Clear();
-  ppiray::StageTimes::Laps laps(this->Stages);
+  ppiray::StageTimes::Laps laps(this->Stages, ppiray::ProgressEvents(this, 6));
   ppiray::TetrahedralSplit split;
   ppiray::SplitIntoTetrahedra(grid, /*tetrahedraOnly=*/false, split);
   this->NumberOfUnsupportedCells = split.GetNumberOfUnsupportedCells();

@@ -2,6 +2,7 @@
 
 #include "ppirayLinearCellKinds.h"
 #include "ppirayMapperModes.h"
+#include "ppirayProgress.h"
 #include "vtkPPIRayGridInput.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -10,6 +11,7 @@ vtkPPIRayMeshCells::Status vtkPPIRayMeshCells::Update(vtkUnstructuredGridBase* i
   int layout, vtkPPIRayGridInput& grid, vtkWindow* window, vtkObject* reporter)
 {
   this->Stages.Clear();
+  this->Rebuilt = false;
   ppiray::StageTimes::Laps laps(this->Stages);
   const ppiray::GridGeometryKey::Match match = this->Key.Update(input);
   laps.End("geometry key");
@@ -24,6 +26,8 @@ vtkPPIRayMeshCells::Status vtkPPIRayMeshCells::Update(vtkUnstructuredGridBase* i
     return this->Valid ? Status::Current : Status::Failed;
   }
   this->Input = input;
+  this->Rebuilt = true;
+  ppiray::ReportProgress(reporter, 0.0);
   this->BuiltNative = native;
   this->BuiltLayout = layout;
   this->Time.Modified();

@@ -52,6 +52,8 @@ public:
   const ppiray::StageTimes& GetStageTimes() const { return this->Stages; }
   /** When the cells were last built. */
   vtkMTimeType GetMTime() const { return this->Time.GetMTime(); }
+  /** Whether the last Update() built the cells (its progress reported from 0). */
+  bool WasRebuilt() const { return this->Rebuilt; }
 
   ///@{
   /** What the last build made, for the mapper's statistics. */
@@ -83,6 +85,7 @@ private:
   bool BuiltNative = false; // built with the native modes
   int BuiltLayout = 0;      // the tetrahedron layout built
   bool Valid = false;
+  bool Rebuilt = false; // by the last Update()
 };
 
 #endif

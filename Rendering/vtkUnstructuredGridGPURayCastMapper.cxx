@@ -1,6 +1,7 @@
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include "ppirayMapperModes.h"
+#include "ppirayProgress.h"
 
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -349,7 +350,16 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateCollaborators(
   }
   const bool cells = this->UpdateCells(input, context);
   in.Statistics->PreparationStages.Add(in.Mesh.GetStageTimes());
-  ppiray::StageTimes::Laps laps(in.Statistics->PreparationStages);
+  // A rebuild's progress: the cells' stages, then these three to 1.
+  ppiray::StageTimes::Laps laps(in.Statistics->PreparationStages,
+    [this, rebuilt = in.Mesh.WasRebuilt()](int lap)
+    {
+      if (rebuilt)
+      {
+        ppiray::ReportProgress(
+          this, ppiray::CellsProgress[1] + (1 - ppiray::CellsProgress[1]) * lap / 3);
+      }
+    });
   if (!cells || !this->UpdateField(input) ||
       !in.TransferFunction.Update(vol->GetProperty(), in.Field.GetShift(), this))
   {

@@ -5,6 +5,7 @@
 #include "vtkAppendFilter.h"
 #include "vtkCellType.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkContourValues.h"
@@ -138,6 +139,14 @@ vtkPPIRayVolumeRepresentation::vtkPPIRayVolumeRepresentation()
 {
   this->AddVolumeMapper(PPIRayMapperName, this->Mapper);
   this->Superclass::SetActiveVolumeMapper(PPIRayMapperName);
+  this->Mapper->AddObserver(
+    vtkCommand::ProgressEvent, this, &vtkPPIRayVolumeRepresentation::ForwardMapperProgress);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayVolumeRepresentation::ForwardMapperProgress(vtkObject*, unsigned long, void* progress)
+{
+  this->UpdateProgress(*static_cast<double*>(progress));
 }
 
 //------------------------------------------------------------------------------

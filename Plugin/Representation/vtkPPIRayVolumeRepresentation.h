@@ -25,6 +25,8 @@
  * The mapper's settings are forwarded without touching the pipeline, so a
  * change re-renders without re-uploading geometry or scalars (the mapper's
  * caches and upload counters are reachable through GetPPIRayMapper()).
+ * The mapper's progress while it prepares a new mesh is the
+ * representation's (ProgressEvent), for ParaView's progress bar.
  */
 #ifndef vtkPPIRayVolumeRepresentation_h
 #define vtkPPIRayVolumeRepresentation_h
@@ -102,6 +104,9 @@ protected:
 private:
   vtkPPIRayVolumeRepresentation(const vtkPPIRayVolumeRepresentation&) = delete;
   void operator=(const vtkPPIRayVolumeRepresentation&) = delete;
+
+  // The mapper's ProgressEvent as this representation's progress.
+  void ForwardMapperProgress(vtkObject*, unsigned long, void* progress);
 
   vtkUnstructuredGridGPURayCastMapper* Mapper;
   bool PassesCellsUnsplit = false;

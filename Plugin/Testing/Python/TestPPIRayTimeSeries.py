@@ -15,7 +15,10 @@ the CPU reference renderer of that step's grid: p99 at most 1/255 and max
 at most 2/255 over the covered pixels (the 8-bit rounding of the screenshot
 and of the background blend, 0.5 each), at least a quarter of the view
 covered; and each step's image differs from the one before (the field
-moved).
+moved). The representation reports the mapper's progress while it builds
+the cells (ProgressEvent, for ParaView's progress bar): up to the first
+step, six values or more strictly between 0 and 1 (the build's stages;
+the pipeline itself reports only 0 and 1); at later steps none.
 
 Usage: pvbatch TestPPIRayTimeSeries.py PLUGIN TEMPORARY_DIR
 """
@@ -80,6 +83,10 @@ def step_through(path, cells, label, temporary, failures):
     view = pt.render_view(SIZE)
     display = pt.show_volume(reader, view, "s", rgb_points=RGB, opacity_points=OPACITY,
                              unit_distance=0.5)
+    progress = []
+    representation = display.GetClientSideObject().GetActiveRepresentation()
+    representation.AddObserver("ProgressEvent",
+                               lambda caller, event: progress.append(caller.GetProgress()))
     scene = GetAnimationScene()
     scene.UpdateAnimationUsingDataTimeSteps()
     pt.set_camera(view, (2.5, -1.8, 2.0))
@@ -87,6 +94,12 @@ def step_through(path, cells, label, temporary, failures):
     for k in range(STEPS):
         scene.AnimationTime = float(k)
         Render(view)
+        stages = sorted(set(v for v in progress if 0.0 < v < 1.0))
+        print("%s step %d: progress between 0 and 1: %s"
+              % (label, k, " ".join("%.2f" % v for v in stages)))
+        if (k == 0 and (len(stages) < 6 or 1.0 not in progress)) or (k > 0 and stages):
+            failures.append("%s step %d: progress %s" % (label, k, progress))
+        progress.clear()
         mapper = pt.mapper_of(display)
         s = mapper.GetStatistics()
         counts = (s.GetGeometryUploadCount(), s.GetFieldUploadCount(), s.GetGeometryReuseCount())

@@ -15,15 +15,20 @@
 //     nothing built, nothing uploaded.
 // At every step the statistics name the preparation's stages, each timed
 // (finite, not negative): the cells' stages ("validation", "adjacency")
-// only where the cells were built, "geometry key" and "field" always.
+// only where the cells were built, "geometry key" and "field" always. A
+// build reports its progress (ProgressEvent): from 0 to 1, never back, one
+// event per stage at least; a step that keeps the cells reports none.
 
 #include "PPIRayImageCompare.h"
 #include "PPIRayTestScenes.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
+#include "vtkCommand.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -66,9 +71,11 @@ GridPtr DeepCopy(vtkUnstructuredGrid* grid)
 // Renders `grid` with `mapper`, then with a fresh mapper; the number of
 // errors (images not equal, or an empty view), and the image.
 int RenderAgainstFresh(ppiray_test::Scene& scene, vtkUnstructuredGridGPURayCastMapper* mapper,
-  vtkUnstructuredGrid* grid, const std::string& step, std::vector<unsigned char>& image)
+  vtkUnstructuredGrid* grid, const std::string& step, std::vector<unsigned char>& image,
+  std::vector<double>& progress)
 {
   mapper->SetInputData(grid);
+  progress.clear();
   scene.Window->Render();
   image = ppiray_test::ReadRGB(scene.Window);
   vtkNew<vtkUnstructuredGridGPURayCastMapper> fresh;
@@ -132,6 +139,33 @@ int CheckStages(vtkUnstructuredGridGPURayCastStatistics* s, bool built, const st
   return errors;
 }
 
+// The number of errors in the progress reported by one frame (`values`),
+// after the pipeline's own (0, 1) where a new input made it execute the
+// mapper (vtkDemandDrivenPipeline reports both around RequestData).
+int CheckProgress(std::vector<double> values, bool built, const std::string& step)
+{
+  if (values.size() >= 2 && values[0] == 0.0 && values[1] == 1.0)
+  {
+    values.erase(values.begin(), values.begin() + 2);
+  }
+  std::cout << "  progress:";
+  for (double v : values)
+  {
+    std::cout << " " << v;
+  }
+  std::cout << "\n";
+  const bool rises = std::is_sorted(values.begin(), values.end());
+  const bool ok = built
+                    ? values.size() >= 8 && values.front() == 0.0 && values.back() == 1.0 && rises
+                    : values.empty();
+  if (!ok)
+  {
+    std::cerr << "FAILED: " << step << ": progress does not match a "
+              << (built ? "rebuild (0 to 1, rising, 8 events at least)" : "reuse (none)") << "\n";
+  }
+  return ok ? 0 : 1;
+}
+
 int RunSeries(bool hexahedra)
 {
   const int n[3] = { 5, 5, 5 };
@@ -143,6 +177,12 @@ int RunSeries(bool hexahedra)
   vtkNew<vtkUnstructuredGridGPURayCastMapper> mapper;
   scene.Show(mapper, grid, { 2.2, 1.4, 2.6 }, { 0.5, 0.5, 0.5 });
   const char* kind = hexahedra ? "hexahedra" : "tetrahedra";
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&progress);
+  onProgress->SetCallback([](vtkObject*, unsigned long, void* values, void* fraction)
+    { static_cast<std::vector<double>*>(values)->push_back(*static_cast<double*>(fraction)); });
+  mapper->AddObserver(vtkCommand::ProgressEvent, onProgress);
 
   int errors = 0;
   int built = 0;
@@ -150,6 +190,7 @@ int RunSeries(bool hexahedra)
   {
     vtkUnstructuredGridGPURayCastStatistics* s = mapper->GetStatistics();
     errors += CheckStages(s, geometry != built, std::string(kind) + ", " + step);
+    errors += CheckProgress(progress, geometry != built, std::string(kind) + ", " + step);
     built = geometry;
     std::cout << kind << ", " << step << ": geometry uploads " << s->GetGeometryUploadCount()
               << ", field uploads " << s->GetFieldUploadCount() << ", geometry reused "
@@ -163,7 +204,7 @@ int RunSeries(bool hexahedra)
     }
   };
   std::vector<unsigned char> image;
-  errors += RenderAgainstFresh(scene, mapper, grid, "first step", image);
+  errors += RenderAgainstFresh(scene, mapper, grid, "first step", image, progress);
   expect(1, 1, 0, "first step");
   if (hexahedra && mapper->GetStatistics()->GetNumberOfHexahedra() != 125)
   {
@@ -174,19 +215,20 @@ int RunSeries(bool hexahedra)
   // 1.
   GridPtr step = SharedCopy(grid);
   NewScalars(step, 1.3, -1.0);
-  errors += RenderAgainstFresh(scene, mapper, step, "shared arrays, new scalars", image);
+  errors += RenderAgainstFresh(scene, mapper, step, "shared arrays, new scalars", image, progress);
   expect(1, 2, 1, "shared arrays, new scalars");
   // 2.
   step = DeepCopy(step);
   NewScalars(step, 0.1, 0.9);
-  errors += RenderAgainstFresh(scene, mapper, step, "copied arrays, other scalars", image);
+  errors +=
+    RenderAgainstFresh(scene, mapper, step, "copied arrays, other scalars", image, progress);
   expect(1, 3, 2, "copied arrays, other scalars");
   // 3.
   step = DeepCopy(step);
   double x[3];
   step->GetPoints()->GetPoint(7, x);
   step->GetPoints()->SetPoint(7, x[0] + 0.05, x[1], x[2]);
-  errors += RenderAgainstFresh(scene, mapper, step, "a point moved", image);
+  errors += RenderAgainstFresh(scene, mapper, step, "a point moved", image, progress);
   expect(2, 4, 2, "a point moved");
   // 4.
   step = DeepCopy(step);
@@ -194,7 +236,7 @@ int RunSeries(bool hexahedra)
   const double a = connectivity->GetTuple1(0), b = connectivity->GetTuple1(1);
   connectivity->SetTuple1(0, b);
   connectivity->SetTuple1(1, a);
-  errors += RenderAgainstFresh(scene, mapper, step, "a cell inside out", image);
+  errors += RenderAgainstFresh(scene, mapper, step, "a cell inside out", image, progress);
   expect(3, 5, 2, "a cell inside out");
   const auto insideOut = image;
   // 5.
@@ -204,7 +246,7 @@ int RunSeries(bool hexahedra)
   {
     step->GetCellGhostArray()->SetValue(c, vtkDataSetAttributes::HIDDENCELL);
   }
-  errors += RenderAgainstFresh(scene, mapper, step, "cells hidden", image);
+  errors += RenderAgainstFresh(scene, mapper, step, "cells hidden", image, progress);
   expect(4, 6, 2, "cells hidden");
   if (ppiray_test::Compare(image, insideOut).Max < 10)
   {
@@ -212,7 +254,8 @@ int RunSeries(bool hexahedra)
     ++errors;
   }
   // 6.
-  errors += RenderAgainstFresh(scene, mapper, SharedCopy(step), "all arrays shared", image);
+  errors +=
+    RenderAgainstFresh(scene, mapper, SharedCopy(step), "all arrays shared", image, progress);
   expect(4, 6, 3, "all arrays shared");
   return errors;
 }
