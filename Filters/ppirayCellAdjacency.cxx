@@ -1,5 +1,6 @@
 #include "ppirayCellAdjacency.h"
 
+#include "ppirayGridGeometryKey.h"
 #include "ppirayInvertedSheets.h"
 #include "vtkMath.h"
 #include "vtkUnstructuredGridCellAdjacency.h"
@@ -376,6 +377,32 @@ bool CellFacesFrom(const CellFaceMesh& mesh, vtkIdType c, int f, const FaceKey& 
   return true;
 }
 
+// Whether any cell of the mesh is flat (zero volume).
+bool HasFlatCell(const CellFaceMesh& mesh)
+{
+  return mesh.Flat && std::any_of(mesh.Flat, mesh.Flat + mesh.NumberOfCells,
+                        [](unsigned char flat) { return flat != 0; });
+}
+
+// Which side of each fold is inverted (ppirayInvertedSheets.h); none
+// without folds or coordinates.
+std::vector<unsigned char> InvertedCells(const CellFaceMesh& mesh, const ppiray::CellAdjacency& a)
+{
+  if (!mesh.Points || a.NumberOfFoldedFaces == 0)
+  {
+    return std::vector<unsigned char>(mesh.NumberOfCells, 0);
+  }
+  return ppiray::InvertedSheets(
+    mesh.NumberOfCells, mesh.FaceSlots,
+    [&](vtkIdType c, int f) { return a.Neighbors[mesh.FaceSlots * c + f]; },
+    [&](vtkIdType c, int f) { return a.Folded[mesh.FaceSlots * c + f] != 0; },
+    [&](vtkIdType c)
+    {
+      return std::abs(
+        ppiray::CellVolume6(TableOf(mesh, c), mesh.CornerIds + mesh.CornerStride * c, mesh.Points));
+    });
+}
+
 // Point-to-cell links by counting sort: cells around point p are
 // links[offsets[p]..offsets[p+1]) (a cell with a repeated point id is
 // listed there twice).
@@ -513,23 +540,8 @@ CellAdjacency MatchCellFaces(const CellFaceMesh& mesh)
   result.NumberOfNonManifoldFaces = nonManifold.load();
   result.NumberOfFoldedFaces = folded.load() / 2; // each pair counted from both faces
 
-  // Which side of each fold is inverted.
-  if (mesh.Points && result.NumberOfFoldedFaces > 0)
-  {
-    result.Inverted = ppiray::InvertedSheets(
-      mesh.NumberOfCells, mesh.FaceSlots,
-      [&](vtkIdType c, int f) { return result.Neighbors[mesh.FaceSlots * c + f]; },
-      [&](vtkIdType c, int f) { return result.Folded[mesh.FaceSlots * c + f] != 0; },
-      [&](vtkIdType c)
-      {
-        return std::abs(
-          CellVolume6(TableOf(mesh, c), mesh.CornerIds + mesh.CornerStride * c, mesh.Points));
-      });
-  }
-  else
-  {
-    result.Inverted.assign(mesh.NumberOfCells, 0);
-  }
+  result.Inverted = InvertedCells(mesh, result);
+  result.ByIds = result.NumberOfNonManifoldFaces == 0 && !HasFlatCell(mesh);
 
   // A flat cell with a hidden face lies on a face that other cells close:
   // none of its faces is a boundary.
@@ -548,5 +560,72 @@ CellAdjacency MatchCellFaces(const CellFaceMesh& mesh)
     }
   }
   return result;
+}
+
+//------------------------------------------------------------------------------
+bool RefoldCellFaces(const CellFaceMesh& mesh, CellAdjacency& adjacency)
+{
+  if (!adjacency.ByIds || !mesh.Points || HasFlatCell(mesh) ||
+      adjacency.Neighbors.size() != static_cast<size_t>(mesh.FaceSlots * mesh.NumberOfCells))
+  {
+    return false;
+  }
+  // Each pair from its first cell face, against the plane MatchCellFaces()
+  // sides it by (PlaneOf: the same from either cell face).
+  CellAdjacency& a = adjacency;
+  vtkIdType folded = 0;
+#pragma omp parallel for schedule(static) reduction(+ : folded)
+  for (vtkIdType c = 0; c < mesh.NumberOfCells; ++c)
+  {
+    for (int f = 0; f < TableOf(mesh, c).Faces; ++f)
+    {
+      const vtkIdType slot = mesh.FaceSlots * c + f;
+      const vtkIdType n = a.Neighbors[slot];
+      const int g = a.NeighborFaces[slot];
+      if (n < c || (n == c && g < f))
+      {
+        continue; // a boundary face, or the pair's second cell face
+      }
+      vtkIdType ids[4];
+      const FacePlane plane = PlaneOf(mesh.Points, ids, FaceIds(mesh, c, f, ids));
+      const int side = SideOfPlane(plane, mesh, c, f);
+      const bool isFolded = side != 0 && side == SideOfPlane(plane, mesh, n, g);
+      a.Folded[slot] = a.Folded[mesh.FaceSlots * n + g] = isFolded ? 1 : 0;
+      folded += isFolded ? 1 : 0;
+    }
+  }
+  a.NumberOfFoldedFaces = folded;
+  a.Inverted = InvertedCells(mesh, a);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+const CellAdjacency& CellAdjacencyCache::Update(const CellFaceMesh& mesh)
+{
+  // The cells by their corner ids, kinds and face tables, and the number of points.
+  ContentDigest cells =
+    DigestBytes(mesh.CornerIds, sizeof(vtkIdType) * mesh.CornerStride * mesh.NumberOfCells);
+  if (mesh.Kinds)
+  {
+    cells = DigestBytes(mesh.Kinds, mesh.NumberOfCells, cells);
+  }
+  const vtkIdType shape[3] = { mesh.NumberOfPoints, mesh.CornerStride, mesh.FaceSlots };
+  cells = DigestBytes(shape, sizeof(shape), cells);
+  cells = DigestBytes(mesh.Tables, sizeof(mesh.Tables), cells);
+  this->Kept = this->Valid && cells == this->Cells && RefoldCellFaces(mesh, this->Adjacency);
+  if (!this->Kept)
+  {
+    this->Adjacency = MatchCellFaces(mesh);
+  }
+  this->Cells = cells;
+  this->Valid = true;
+  return this->Adjacency;
+}
+
+//------------------------------------------------------------------------------
+void CellAdjacencyCache::Clear()
+{
+  this->Adjacency = CellAdjacency();
+  this->Valid = this->Kept = false;
 }
 }

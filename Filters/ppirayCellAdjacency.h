@@ -39,7 +39,8 @@
 #ifndef ppirayCellAdjacency_h
 #define ppirayCellAdjacency_h
 
-#include "ppirayFiltersModule.h" // for export macro
+#include "ppirayFiltersModule.h"   // for export macro
+#include "ppirayGridGeometryKey.h" // for ppiray::ContentDigest
 #include "vtkType.h"
 
 #include <vector> // for std::vector
@@ -88,9 +89,50 @@ struct CellAdjacency
   vtkIdType NumberOfNonManifoldFaces = 0;
   /** Folded pairs of cell faces. */
   vtkIdType NumberOfFoldedFaces = 0;
+  /**
+   * Neighbors, NeighborFaces and BoundaryFaces follow from the point ids
+   * alone (no flat cell, no face shared by more than two cell faces), so
+   * RefoldCellFaces() can keep them for other coordinates.
+   */
+  bool ByIds = false;
 };
 
 PPIRAYFILTERS_EXPORT CellAdjacency MatchCellFaces(const CellFaceMesh& mesh);
+
+/**
+ * `adjacency`, which MatchCellFaces() found for the same cells (corner ids)
+ * with other coordinates, made `mesh`'s: the folds (Folded,
+ * NumberOfFoldedFaces, Inverted) found again from its coordinates, the
+ * rest kept, as MatchCellFaces() would find them. False (`adjacency`
+ * untouched) where that does not hold: not ByIds, or a cell of `mesh` is
+ * flat.
+ */
+PPIRAYFILTERS_EXPORT bool RefoldCellFaces(const CellFaceMesh& mesh, CellAdjacency& adjacency);
+
+/**
+ * The adjacency of the last cells seen, kept for the next build: a
+ * deforming mesh (the same cells, points moved) finds only its folds again
+ * (RefoldCellFaces()), any other change matches its faces again
+ * (MatchCellFaces()). The cells are recognized by a digest of their corner
+ * ids, kinds and face tables and the number of points
+ * (ppirayGridGeometryKey.h's DigestBytes).
+ */
+class PPIRAYFILTERS_EXPORT CellAdjacencyCache
+{
+public:
+  const CellAdjacency& Update(const CellFaceMesh& mesh);
+  /** The adjacency of the last Update(). */
+  const CellAdjacency& Get() const { return this->Adjacency; }
+  /** Whether the last Update() kept the faces' pairs (only the folds found again). */
+  bool WasKept() const { return this->Kept; }
+  void Clear();
+
+private:
+  CellAdjacency Adjacency;
+  ContentDigest Cells;
+  bool Valid = false;
+  bool Kept = false;
+};
 
 /**
  * The side of face `face` of `cell` that the cell lies on: the sign (+1, -1,

@@ -201,7 +201,7 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->StoreCorners();
   laps.End("corners");
   std::vector<vtkIdType> boundary = this->MatchFaces();
-  laps.End("adjacency");
+  laps.End(this->Adjacency.WasKept() ? "folds" : "adjacency");
   this->LinkSplitQuadrilaterals(boundary);
   this->ExtractBoundary(boundary, grid->GetNumberOfPoints());
   laps.End("boundary");
@@ -404,7 +404,7 @@ std::vector<vtkIdType> vtkHexahedralCellTextures::MatchFaces()
     }
   }
   this->NumberOfUnfoldedFaces = diagonals.GetNumberOfUnfoldedFaces();
-  const ppiray::CellAdjacency adjacency = ppiray::MatchCellFaces(this->FaceMesh());
+  const ppiray::CellAdjacency& adjacency = this->Adjacency.Update(this->FaceMesh());
   this->NumberOfNonManifoldFaces = adjacency.NumberOfNonManifoldFaces;
   this->NumberOfFoldedFaces = adjacency.NumberOfFoldedFaces;
   this->Neighbors.assign(8 * count, -1);

@@ -38,6 +38,7 @@
 #ifndef vtkHexahedralCellTextures_h
 #define vtkHexahedralCellTextures_h
 
+#include "ppirayCellAdjacency.h" // for ppiray::CellAdjacencyCache
 #include "ppirayFiltersModule.h" // for export macro
 #include "ppirayStageTimes.h"    // for ppiray::StageTimes
 #include "vtkObject.h"
@@ -227,6 +228,8 @@ protected:
 
 private:
   ppiray::StageTimes Stages; // of the last BuildGeometry()
+  // Kept between builds: the same cells find only their folds again.
+  ppiray::CellAdjacencyCache Adjacency;
   vtkHexahedralCellTextures(const vtkHexahedralCellTextures&) = delete;
   void operator=(const vtkHexahedralCellTextures&) = delete;
 };

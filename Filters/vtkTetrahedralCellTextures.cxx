@@ -189,7 +189,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   laps.End("planes");
 
   // Neighbours: the flat tetrahedra between the others, folded faces marked.
-  vtkNew<vtkUnstructuredGridCellAdjacency> adjacency;
+  vtkUnstructuredGridCellAdjacency* adjacency = this->Adjacency;
   adjacency->Build(numberOfPoints, tets, numberOfTets, local, this->Degenerate.data());
   this->NumberOfNonManifoldFaces = adjacency->GetNumberOfNonManifoldFaces();
   this->NumberOfFoldedFaces = adjacency->GetNumberOfFoldedFaces();
@@ -205,7 +205,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     this->Neighbors[k] = n < 0 ? NoNeighbor() : NeighborCode(n, neighborFaces[k], folded, inPlace);
   }
 
-  laps.End("adjacency");
+  laps.End(adjacency->WasKept() ? "folds" : "adjacency");
 
   // Boundary triangles wound outward, over a compact set of points, but for
   // those joined to the imaginary cells on them.

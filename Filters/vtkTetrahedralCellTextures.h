@@ -41,7 +41,9 @@
 #include "ppirayFiltersModule.h" // for export macro
 #include "ppirayPolyhedra.h"     // for ppiray::AddedPoints
 #include "ppirayStageTimes.h"    // for ppiray::StageTimes
+#include "vtkNew.h"              // for vtkNew
 #include "vtkObject.h"
+#include "vtkUnstructuredGridCellAdjacency.h" // for the adjacency kept between builds
 
 #include <vector> // for std::vector
 
@@ -288,6 +290,8 @@ protected:
 
 private:
   ppiray::StageTimes Stages; // of the last BuildGeometry()
+  // Kept between builds: the same tetrahedra find only their folds again.
+  vtkNew<vtkUnstructuredGridCellAdjacency> Adjacency;
   vtkTetrahedralCellTextures(const vtkTetrahedralCellTextures&) = delete;
   void operator=(const vtkTetrahedralCellTextures&) = delete;
 };

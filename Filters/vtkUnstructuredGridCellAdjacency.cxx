@@ -44,29 +44,22 @@ void vtkUnstructuredGridCellAdjacency::Build(vtkIdType numberOfPoints, const vtk
   mesh.Tables[0] = &Tetrahedron;
   mesh.Points = points;
   mesh.Flat = flat;
-  ppiray::CellAdjacency adjacency = ppiray::MatchCellFaces(mesh);
-  this->Neighbors = std::move(adjacency.Neighbors);
-  this->NeighborFaces = std::move(adjacency.NeighborFaces);
-  this->Folded = std::move(adjacency.Folded);
-  this->Inverted = std::move(adjacency.Inverted);
-  this->BoundaryFaces = std::move(adjacency.BoundaryFaces);
-  this->NumberOfNonManifoldFaces = adjacency.NumberOfNonManifoldFaces;
-  this->NumberOfFoldedFaces = adjacency.NumberOfFoldedFaces;
+  this->Cache.Update(mesh);
   this->Modified();
 }
 
 //------------------------------------------------------------------------------
 bool vtkUnstructuredGridCellAdjacency::WalksBackInPlace(vtkIdType t, vtkIdType n) const
 {
-  return ppiray::WalksBackInPlace(this->Inverted, t, n);
+  return ppiray::WalksBackInPlace(this->Get().Inverted, t, n);
 }
 
 //------------------------------------------------------------------------------
 void vtkUnstructuredGridCellAdjacency::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "NumberOfTetrahedra: " << this->Neighbors.size() / 4 << "\n";
+  os << indent << "NumberOfTetrahedra: " << this->Get().Neighbors.size() / 4 << "\n";
   os << indent << "NumberOfBoundaryFaces: " << this->GetNumberOfBoundaryFaces() << "\n";
-  os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
-  os << indent << "NumberOfFoldedFaces: " << this->NumberOfFoldedFaces << "\n";
+  os << indent << "NumberOfNonManifoldFaces: " << this->GetNumberOfNonManifoldFaces() << "\n";
+  os << indent << "NumberOfFoldedFaces: " << this->GetNumberOfFoldedFaces() << "\n";
 }

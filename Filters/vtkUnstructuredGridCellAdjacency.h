@@ -15,11 +15,14 @@
  * quadrilateral, collapsed hexahedra, tangled regions) paired by the side
  * of the face their fourth point lies on; flat (zero-volume) tetrahedra
  * between the others; folded faces and the inverted side of each fold for
- * the ray caster (IsFolded(), WalksBackInPlace()).
+ * the ray caster (IsFolded(), WalksBackInPlace()). Build() again with the
+ * same tetrahedra (a deforming mesh) finds only the folds again
+ * (ppiray::CellAdjacencyCache; WasKept()).
  */
 #ifndef vtkUnstructuredGridCellAdjacency_h
 #define vtkUnstructuredGridCellAdjacency_h
 
+#include "ppirayCellAdjacency.h" // for ppiray::CellAdjacencyCache
 #include "ppirayFiltersModule.h" // for export macro
 #include "vtkObject.h"
 
@@ -60,22 +63,22 @@ public:
    * Neighbour of face f of tetrahedron t is GetNeighbors()[4 * t + f], -1 on
    * the boundary (and for left-out tetrahedra).
    */
-  const std::vector<vtkIdType>& GetNeighbors() const { return this->Neighbors; }
+  const std::vector<vtkIdType>& GetNeighbors() const { return this->Get().Neighbors; }
 
   /**
    * The neighbour's local face that face f of tetrahedron t is paired with,
    * GetNeighborFaces()[4 * t + f], -1 where there is no neighbour.
    */
-  const std::vector<signed char>& GetNeighborFaces() const { return this->NeighborFaces; }
+  const std::vector<signed char>& GetNeighborFaces() const { return this->Get().NeighborFaces; }
 
   /** Whether face f of tetrahedron t and its neighbour's face are folded. */
-  bool IsFolded(vtkIdType t, int f) const { return this->Folded[4 * t + f] != 0; }
+  bool IsFolded(vtkIdType t, int f) const { return this->Get().Folded[4 * t + f] != 0; }
 
   /**
    * Whether tetrahedron t is on the inverted side of the mesh's folds
    * (ppirayInvertedSheets.h; needs the coordinates).
    */
-  bool IsInverted(vtkIdType t) const { return this->Inverted[t] != 0; }
+  bool IsInverted(vtkIdType t) const { return this->Get().Inverted[t] != 0; }
 
   /**
    * At a folded face from tetrahedron t into n: whether the ray walks back
@@ -86,33 +89,31 @@ public:
   /**
    * Boundary faces as pairs (tetrahedron, local face), in tetrahedron order.
    */
-  const std::vector<vtkIdType>& GetBoundaryFaces() const { return this->BoundaryFaces; }
+  const std::vector<vtkIdType>& GetBoundaryFaces() const { return this->Get().BoundaryFaces; }
 
   vtkIdType GetNumberOfBoundaryFaces() const
   {
-    return static_cast<vtkIdType>(this->BoundaryFaces.size() / 2);
+    return static_cast<vtkIdType>(this->Get().BoundaryFaces.size() / 2);
   }
 
   /**
    * Tetrahedron faces whose three points more than two tetrahedron faces
    * share (paired by side, see above).
    */
-  vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
+  vtkIdType GetNumberOfNonManifoldFaces() const { return this->Get().NumberOfNonManifoldFaces; }
 
   /** Folded faces: pairs of tetrahedron faces whose cells lie on one side. */
-  vtkGetMacro(NumberOfFoldedFaces, vtkIdType);
+  vtkIdType GetNumberOfFoldedFaces() const { return this->Get().NumberOfFoldedFaces; }
+
+  /** Whether the last Build() kept the faces' pairs of the one before (the same tetrahedra). */
+  bool WasKept() const { return this->Cache.WasKept(); }
 
 protected:
   vtkUnstructuredGridCellAdjacency() = default;
   ~vtkUnstructuredGridCellAdjacency() override = default;
 
-  std::vector<vtkIdType> Neighbors;
-  std::vector<signed char> NeighborFaces;
-  std::vector<unsigned char> Folded;
-  std::vector<unsigned char> Inverted;
-  std::vector<vtkIdType> BoundaryFaces;
-  vtkIdType NumberOfNonManifoldFaces = 0;
-  vtkIdType NumberOfFoldedFaces = 0;
+  const ppiray::CellAdjacency& Get() const { return this->Cache.Get(); }
+  ppiray::CellAdjacencyCache Cache;
 
 private:
   vtkUnstructuredGridCellAdjacency(const vtkUnstructuredGridCellAdjacency&) = delete;

@@ -10,7 +10,14 @@
 //  2. three hexahedra on one quadrilateral (one below, two above): paired by
 //     side, the below one with the first above; the other a boundary face;
 //  3. two hexahedra on one side of their shared face: folded, the smaller
-//     one inverted, the ray walking back in place from it.
+//     one inverted, the ray walking back in place from it;
+//  4. a deforming mesh (ppiray::CellAdjacencyCache): the lattice of 1. with
+//     its points moved (an inner point pushed through its neighbours, which
+//     folds cells; then moved back) keeps its faces' pairs and finds only
+//     the folds again, equal in every array to MatchCellFaces() of the moved
+//     mesh (folds found, then none); the same cells with one flat, with one
+//     cell's ids changed, or a mesh with a face of three cells (paired by
+//     side) are matched again.
 
 #include "ppirayCellAdjacency.h"
 #include "ppirayInvertedSheets.h"
@@ -216,21 +223,28 @@ void AddBox(Mesh& mesh, const vtkIdType bottom[4], double z1, vtkIdType top[4])
     { bottom[0], bottom[1], bottom[2], bottom[3], top[0], top[1], top[2], top[3] });
 }
 
+// A = [0,1]^3, B above it to z = 2, C above it to z = 1.5: three hexahedra
+// on A's top face.
+Mesh ThreeOnAFace()
+{
+  Mesh mesh;
+  vtkIdType base[4], middle[4], upper[4], other[4];
+  for (int v = 0; v < 4; ++v)
+  {
+    base[v] = mesh.AddPoint(v == 1 || v == 2, v >= 2, 0);
+  }
+  AddBox(mesh, base, 1, middle);
+  AddBox(mesh, middle, 2, upper);
+  AddBox(mesh, middle, 1.5, other);
+  return mesh;
+}
+
 int CheckSharedFaces()
 {
   int failures = 0;
   const int top = 5, bottom = 4; // hexahedron faces z+ and z-
   {
-    // A = [0,1]^3, B above it to z = 2, C above it to z = 1.5.
-    Mesh mesh;
-    vtkIdType base[4], middle[4], upper[4], other[4];
-    for (int v = 0; v < 4; ++v)
-    {
-      base[v] = mesh.AddPoint(v == 1 || v == 2, v >= 2, 0);
-    }
-    AddBox(mesh, base, 1, middle);
-    AddBox(mesh, middle, 2, upper);
-    AddBox(mesh, middle, 1.5, other);
+    const Mesh mesh = ThreeOnAFace();
     const ppiray::CellAdjacency a = ppiray::MatchCellFaces(mesh.FaceMesh());
     const bool cBoundary =
       std::find(a.BoundaryFaces.begin(), a.BoundaryFaces.end(), 2) != a.BoundaryFaces.end();
@@ -300,6 +314,98 @@ int CheckSharedFaces()
   }
   return failures;
 }
+
+// Whether two adjacencies are equal in every array and count.
+bool SameAdjacency(const ppiray::CellAdjacency& a, const ppiray::CellAdjacency& b)
+{
+  return a.Neighbors == b.Neighbors && a.NeighborFaces == b.NeighborFaces && a.Folded == b.Folded &&
+         a.Inverted == b.Inverted && a.BoundaryFaces == b.BoundaryFaces &&
+         a.NumberOfNonManifoldFaces == b.NumberOfNonManifoldFaces &&
+         a.NumberOfFoldedFaces == b.NumberOfFoldedFaces && a.ByIds == b.ByIds;
+}
+
+// One update of the cache: the number of errors (not kept where `kept`, or
+// kept where not; any array unlike MatchCellFaces()'s).
+int ExpectUpdate(ppiray::CellAdjacencyCache& cache, const ppiray::CellFaceMesh& mesh, bool kept,
+  const char* step, vtkIdType* folded = nullptr)
+{
+  const ppiray::CellAdjacency& a = cache.Update(mesh);
+  const ppiray::CellAdjacency fresh = ppiray::MatchCellFaces(mesh);
+  std::cout << "deforming, " << step << ": kept " << cache.WasKept() << ", folded faces "
+            << a.NumberOfFoldedFaces << " (fresh " << fresh.NumberOfFoldedFaces << ")\n";
+  if (folded)
+  {
+    *folded = a.NumberOfFoldedFaces;
+  }
+  if (cache.WasKept() != kept || !SameAdjacency(a, fresh))
+  {
+    std::cerr << "deforming, " << step << ": expected " << (kept ? "kept" : "matched again")
+              << " and equal to MatchCellFaces()\n";
+    return 1;
+  }
+  return 0;
+}
+
+int CheckDeforming()
+{
+  const int n = 4;
+  Mesh mesh;
+  for (int k = 0; k <= n; ++k)
+  {
+    for (int j = 0; j <= n; ++j)
+    {
+      for (int i = 0; i <= n; ++i)
+      {
+        mesh.AddPoint(i, j, k);
+      }
+    }
+  }
+  for (int c = 0; c < n * n * n; ++c)
+  {
+    mesh.AddPoint(c % n + 0.5, (c / n) % n + 0.5, c / (n * n) + 0.5);
+  }
+  for (int c = 0; c < n * n * n; ++c)
+  {
+    AddCube(mesh, n, c % n, (c / n) % n, c / (n * n), c % 4);
+  }
+  int failures = 0;
+  ppiray::CellAdjacencyCache cache;
+  failures += ExpectUpdate(cache, mesh.FaceMesh(), false, "first");
+  // Lattice point (2, 2, 2) pushed through the cells beside it, to
+  // (4, 2.4, 2.7): cells turn inside out, folding faces.
+  const vtkIdType pushed = 2 + (n + 1) * (2 + (n + 1) * 2);
+  const std::vector<double> original = mesh.Points;
+  mesh.Points[3 * pushed] += 2.0;
+  mesh.Points[3 * pushed + 1] += 0.4;
+  mesh.Points[3 * pushed + 2] += 0.7;
+  vtkIdType folded = 0;
+  failures += ExpectUpdate(cache, mesh.FaceMesh(), true, "a point pushed through", &folded);
+  if (folded == 0)
+  {
+    std::cerr << "deforming: pushing a point through its neighbours folded nothing\n";
+    ++failures;
+  }
+  mesh.Points = original;
+  failures += ExpectUpdate(cache, mesh.FaceMesh(), true, "moved back", &folded);
+  failures += folded == 0 ? 0 : 1;
+
+  std::vector<unsigned char> flat(mesh.Kinds.size(), 0);
+  flat[5] = 1;
+  ppiray::CellFaceMesh withFlat = mesh.FaceMesh();
+  withFlat.Flat = flat.data();
+  failures += ExpectUpdate(cache, withFlat, false, "a flat cell");
+  failures += ExpectUpdate(cache, withFlat, false, "a flat cell again");
+  failures += ExpectUpdate(cache, mesh.FaceMesh(), false, "no flat cell");
+  std::swap(mesh.Corners[8 * 3], mesh.Corners[8 * 3 + 1]);
+  failures += ExpectUpdate(cache, mesh.FaceMesh(), false, "a cell's ids changed");
+
+  Mesh three = ThreeOnAFace();
+  ppiray::CellAdjacencyCache threeCache;
+  failures += ExpectUpdate(threeCache, three.FaceMesh(), false, "three on a face");
+  three.Points.back() += 0.1; // a top corner of C
+  failures += ExpectUpdate(threeCache, three.FaceMesh(), false, "three on a face, moved");
+  return failures;
+}
 }
 
 int TestCellAdjacency(int, char*[])
@@ -307,6 +413,6 @@ int TestCellAdjacency(int, char*[])
   // Unjittered, the cells' volumes sum to the lattice's; jittered, shared
   // quadrilaterals are not planar and the two cells on one fan it from
   // different corners, so only the signs are checked.
-  const int failures = CheckLattice(0) + CheckLattice(0.15) + CheckSharedFaces();
+  const int failures = CheckLattice(0) + CheckLattice(0.15) + CheckSharedFaces() + CheckDeforming();
   return failures == 0 ? 0 : 1;
 }

@@ -7,15 +7,18 @@
 // of the same step (equal to the last bit, over a covered view):
 //  1. a new grid sharing the points and cells, new scalars: kept;
 //  2. a new grid with deep copies of every array, other scalars: kept;
-//  3. a copy with one point moved: rebuilt;
-//  4. a copy with one cell turned inside out (two point ids swapped): rebuilt;
-//  5. a copy with one cell hidden (the ghost array): rebuilt, and the image
-//     differs from step 4's;
+//  3. a copy with one point moved: rebuilt, the faces' pairs kept (only the
+//     folds found again: the "folds" stage, not "adjacency");
+//  4. a copy with one cell turned inside out (two point ids swapped): rebuilt,
+//     faces matched again;
+//  5. a copy with one cell hidden (the ghost array): rebuilt, the faces' pairs
+//     kept, and the image differs from step 4's;
 //  6. the field of step 5's grid as another grid shares it (same arrays):
 //     nothing built, nothing uploaded.
 // At every step the statistics name the preparation's stages, each timed
-// (finite, not negative): the cells' stages ("validation", "adjacency")
-// only where the cells were built, "geometry key" and "field" always. A
+// (finite, not negative): the cells' stages ("validation", then "adjacency"
+// or "folds") only where the cells were built, "geometry key" and "field"
+// always. A
 // build reports its progress (ProgressEvent): from 0 to 1, never back, one
 // event per stage at least; a step that keeps the cells reports none.
 
@@ -104,9 +107,11 @@ int RenderAgainstFresh(ppiray_test::Scene& scene, vtkUnstructuredGridGPURayCastM
 }
 
 // The number of errors in the statistics' stages of the last frame: each
-// timed, finite and not negative; "validation" and "adjacency" there exactly
-// when the cells were built.
-int CheckStages(vtkUnstructuredGridGPURayCastStatistics* s, bool built, const std::string& step)
+// timed, finite and not negative; "validation" there exactly when the cells
+// were built, with `adjacency` ("adjacency": faces matched, "folds": the
+// same cells' pairs kept) and not the other; neither where nullptr (kept).
+int CheckStages(
+  vtkUnstructuredGridGPURayCastStatistics* s, const char* adjacency, const std::string& step)
 {
   int errors = 0;
   std::set<std::string> names;
@@ -127,14 +132,16 @@ int CheckStages(vtkUnstructuredGridGPURayCastStatistics* s, bool built, const st
   {
     errors += names.count(always) == 1 ? 0 : 1;
   }
-  for (const char* cells : { "validation", "adjacency" })
+  const bool built = adjacency != nullptr;
+  errors += (names.count("validation") == 1) == built ? 0 : 1;
+  for (const char* stage : { "adjacency", "folds" })
   {
-    errors += (names.count(cells) == 1) == built ? 0 : 1;
+    errors += (names.count(stage) == 1) == (built && std::string(stage) == adjacency) ? 0 : 1;
   }
   if (errors != 0)
   {
     std::cerr << "FAILED: " << step << ": the stages do not match a "
-              << (built ? "rebuild" : "reuse") << "\n";
+              << (built ? std::string("rebuild with ") + adjacency : std::string("reuse")) << "\n";
   }
   return errors;
 }
@@ -186,10 +193,11 @@ int RunSeries(bool hexahedra)
 
   int errors = 0;
   int built = 0;
-  auto expect = [&](int geometry, int field, int reused, const std::string& step)
+  auto expect =
+    [&](int geometry, int field, int reused, const std::string& step, const char* adjacency)
   {
     vtkUnstructuredGridGPURayCastStatistics* s = mapper->GetStatistics();
-    errors += CheckStages(s, geometry != built, std::string(kind) + ", " + step);
+    errors += CheckStages(s, adjacency, std::string(kind) + ", " + step);
     errors += CheckProgress(progress, geometry != built, std::string(kind) + ", " + step);
     built = geometry;
     std::cout << kind << ", " << step << ": geometry uploads " << s->GetGeometryUploadCount()
@@ -205,7 +213,7 @@ int RunSeries(bool hexahedra)
   };
   std::vector<unsigned char> image;
   errors += RenderAgainstFresh(scene, mapper, grid, "first step", image, progress);
-  expect(1, 1, 0, "first step");
+  expect(1, 1, 0, "first step", "adjacency");
   if (hexahedra && mapper->GetStatistics()->GetNumberOfHexahedra() != 125)
   {
     std::cerr << "FAILED: hexahedra not marched natively\n";
@@ -216,20 +224,20 @@ int RunSeries(bool hexahedra)
   GridPtr step = SharedCopy(grid);
   NewScalars(step, 1.3, -1.0);
   errors += RenderAgainstFresh(scene, mapper, step, "shared arrays, new scalars", image, progress);
-  expect(1, 2, 1, "shared arrays, new scalars");
+  expect(1, 2, 1, "shared arrays, new scalars", nullptr);
   // 2.
   step = DeepCopy(step);
   NewScalars(step, 0.1, 0.9);
   errors +=
     RenderAgainstFresh(scene, mapper, step, "copied arrays, other scalars", image, progress);
-  expect(1, 3, 2, "copied arrays, other scalars");
+  expect(1, 3, 2, "copied arrays, other scalars", nullptr);
   // 3.
   step = DeepCopy(step);
   double x[3];
   step->GetPoints()->GetPoint(7, x);
   step->GetPoints()->SetPoint(7, x[0] + 0.05, x[1], x[2]);
   errors += RenderAgainstFresh(scene, mapper, step, "a point moved", image, progress);
-  expect(2, 4, 2, "a point moved");
+  expect(2, 4, 2, "a point moved", "folds");
   // 4.
   step = DeepCopy(step);
   vtkDataArray* connectivity = step->GetCells()->GetConnectivityArray();
@@ -237,7 +245,7 @@ int RunSeries(bool hexahedra)
   connectivity->SetTuple1(0, b);
   connectivity->SetTuple1(1, a);
   errors += RenderAgainstFresh(scene, mapper, step, "a cell inside out", image, progress);
-  expect(3, 5, 2, "a cell inside out");
+  expect(3, 5, 2, "a cell inside out", "adjacency");
   const auto insideOut = image;
   // 5.
   step = DeepCopy(step);
@@ -247,7 +255,7 @@ int RunSeries(bool hexahedra)
     step->GetCellGhostArray()->SetValue(c, vtkDataSetAttributes::HIDDENCELL);
   }
   errors += RenderAgainstFresh(scene, mapper, step, "cells hidden", image, progress);
-  expect(4, 6, 2, "cells hidden");
+  expect(4, 6, 2, "cells hidden", "folds");
   if (ppiray_test::Compare(image, insideOut).Max < 10)
   {
     std::cerr << "FAILED: hiding cells did not change the image\n";
@@ -256,7 +264,7 @@ int RunSeries(bool hexahedra)
   // 6.
   errors +=
     RenderAgainstFresh(scene, mapper, SharedCopy(step), "all arrays shared", image, progress);
-  expect(4, 6, 3, "all arrays shared");
+  expect(4, 6, 3, "all arrays shared", nullptr);
   return errors;
 }
 }
