@@ -3,6 +3,7 @@
 #include "ppirayBoundaryFaceLinks.h"
 
 #include "ppirayConformingTetrahedra.h"
+#include "ppirayGridGeometryKey.h"
 #include "ppirayImaginaryTetrahedra.h"
 #include "ppirayValidPointIds.h"
 #include "vtkCellArray.h"
@@ -122,83 +123,18 @@ bool AllFinite(vtkPoints* points)
   }
   return true;
 }
-}
-
-//------------------------------------------------------------------------------
-const char* vtkUnstructuredGridConvexify::BoundaryCellArrayName()
+// The boundary triangles of the conforming split (faces with no
+// neighbour), wound outward, and the input cell each belongs to.
+void OutwardBoundaryTriangles(vtkUnstructuredGrid* grid, const ppiray::TetrahedralSplit& split,
+  std::vector<vtkIdType>& triangles, std::vector<vtkIdType>& owner)
 {
-  return ppiray::BoundaryCellArrayName;
-}
-
-//------------------------------------------------------------------------------
-int vtkUnstructuredGridConvexify::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0]);
-  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector);
-  if (!input || !output)
-  {
-    return 0;
-  }
-  this->NumberOfImaginaryCells = 0;
-  this->NumberOfSteinerPoints = 0;
-  this->NumberOfAddedPoints = 0;
-  this->NumberOfMergedPoints = 0;
-  this->NumberOfDroppedTriangles = 0;
-  this->ExecutionTime = 0.0;
-  vtkNew<vtkTimerLog> timer;
-  timer->StartTimer();
-  // Every early return leaves the input as the output.
-  output->ShallowCopy(input);
-  if (!input->GetPoints() || input->GetNumberOfCells() == 0)
-  {
-    return 1;
-  }
-  if (!AllFinite(input->GetPoints()))
-  {
-    vtkErrorMacro("Infinite or NaN point coordinates: the grid was not convexified.");
-    return 1;
-  }
-  vtkIdType invalidCells = 0;
-  vtkSmartPointer<vtkUnstructuredGrid> grid =
-    ppiray::EmptyCellsWithInvalidPointIds(input, invalidCells);
-  if (invalidCells > 0)
-  {
-    vtkWarningMacro(<< invalidCells << " cells with point ids outside [0, "
-                    << input->GetNumberOfPoints() << ") were emptied.");
-  }
-  else
-  {
-    grid = input;
-  }
-
-  // The fill sees the mesh with coincident points shared (the output keeps
-  // the input's cells; imaginary cells use the first id at each place).
-  vtkIdType mergedPoints = 0;
-  vtkSmartPointer<vtkUnstructuredGrid> sealed = WithCoincidentPointsShared(grid, mergedPoints);
-  ppiray::TetrahedralSplit split;
-  ppiray::SplitIntoTetrahedra(sealed ? sealed.Get() : grid.Get(), false, split);
-  if (split.GetNumberOfUnsupportedCells() > 0)
-  {
-    vtkWarningMacro(<< split.GetNumberOfUnsupportedCells()
-                    << " cells that are not linear or quadratic 3D cells are left out: imaginary "
-                       "cells may fill their space.");
-  }
-  const vtkIdType numberOfTets = static_cast<vtkIdType>(split.CellIds.size());
-  if (numberOfTets == 0)
-  {
-    vtkWarningMacro("No 3D cells: nothing to convexify.");
-    return 1;
-  }
-  this->UpdateProgress(0.05);
-
-  // The boundary: triangles of the conforming split with no neighbour.
-  const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
   vtkNew<vtkUnstructuredGridCellAdjacency> adjacency;
-  adjacency->Build(numberOfPoints, split.Tets.data(), numberOfTets);
+  adjacency->Build(
+    grid->GetNumberOfPoints(), split.Tets.data(), static_cast<vtkIdType>(split.CellIds.size()));
   const std::vector<vtkIdType>& faces = adjacency->GetBoundaryFaces();
   const vtkIdType numberOfFaces = adjacency->GetNumberOfBoundaryFaces();
-  std::vector<vtkIdType> triangles(3 * numberOfFaces), owner(numberOfFaces);
+  triangles.assign(3 * numberOfFaces, 0);
+  owner.assign(numberOfFaces, 0);
   for (vtkIdType k = 0; k < numberOfFaces; ++k)
   {
     const vtkIdType t = faces[2 * k];
@@ -220,45 +156,14 @@ int vtkUnstructuredGridConvexify::RequestData(
     }
     owner[k] = split.CellIds[t];
   }
+}
 
-  // The box: the bounds of the points the cells use, inflated.
-  std::vector<double> xyz(3 * numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    grid->GetPoints()->GetPoint(i, &xyz[3 * i]);
-  }
-  double box[6] = { std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max() };
-  for (vtkIdType id : split.Tets)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      box[2 * a] = std::min(box[2 * a], xyz[3 * id + a]);
-      box[2 * a + 1] = std::max(box[2 * a + 1], xyz[3 * id + a]);
-    }
-  }
-  const double diagonal =
-    std::sqrt((box[1] - box[0]) * (box[1] - box[0]) + (box[3] - box[2]) * (box[3] - box[2]) +
-              (box[5] - box[4]) * (box[5] - box[4]));
-  const double margin = this->Margin * (diagonal > 0.0 ? diagonal : 1.0);
-  for (int a = 0; a < 3; ++a)
-  {
-    box[2 * a] -= margin;
-    box[2 * a + 1] += margin;
-  }
-
-  const ppiray::ImaginaryTetrahedra fill = ppiray::FillBoxAroundSurface(
-    xyz, triangles, box, [this](double done) { this->UpdateProgress(0.1 + 0.8 * done); });
-  this->NumberOfMergedPoints = mergedPoints;
-  this->NumberOfDroppedTriangles = fill.DroppedTriangles;
-  if (!fill.Error.empty())
-  {
-    vtkErrorMacro("Not convexified: " << fill.Error << ".");
-    return 1;
-  }
-
-  // The grid, then the new points and the imaginary tetrahedra.
+// The output: `grid`, then the fill's new points and imaginary tetrahedra,
+// hidden, with the input cells across their faces (BoundaryCellArrayName);
+// point and cell arrays extended with their minimum.
+void AppendImaginaryCells(vtkUnstructuredGrid* grid, const ppiray::ImaginaryTetrahedra& fill,
+  const std::vector<vtkIdType>& owner, vtkUnstructuredGrid* output)
+{
   output->DeepCopy(grid);
   vtkPoints* points = output->GetPoints();
   if (!fill.NewPoints.empty() && points->GetDataType() != VTK_DOUBLE)
@@ -299,7 +204,7 @@ int vtkUnstructuredGridConvexify::RequestData(
     ghosts->SetValue(c, vtkDataSetAttributes::HIDDENCELL);
   }
   vtkNew<vtkIdTypeArray> across;
-  across->SetName(BoundaryCellArrayName());
+  across->SetName(ppiray::BoundaryCellArrayName);
   across->SetNumberOfComponents(4);
   across->SetNumberOfTuples(numberOfCells + numberOfImaginary);
   across->Fill(-1);
@@ -312,10 +217,183 @@ int vtkUnstructuredGridConvexify::RequestData(
     }
   }
   output->GetCellData()->AddArray(across);
+}
 
+// The output of the same geometry convexified before (`last`: its points and
+// cells shared, its hidden flags and cells across kept) with `input`'s point
+// and cell arrays, extended with their minimum.
+void WithAttributesOf(
+  vtkUnstructuredGrid* input, vtkUnstructuredGrid* last, vtkUnstructuredGrid* output)
+{
+  output->CopyStructure(last);
+  output->GetPointData()->DeepCopy(input->GetPointData());
+  output->GetCellData()->DeepCopy(input->GetCellData());
+  ExtendWithMinimum(output->GetPointData(), last->GetNumberOfPoints());
+  ExtendWithMinimum(output->GetCellData(), last->GetNumberOfCells());
+  output->GetCellData()->AddArray(last->GetCellGhostArray());
+  output->GetCellData()->AddArray(last->GetCellData()->GetArray(ppiray::BoundaryCellArrayName));
+}
+}
+
+//------------------------------------------------------------------------------
+// The last fill, kept for the same geometry (a time series' next step).
+struct vtkUnstructuredGridConvexify::vtkInternals
+{
+  ppiray::GridGeometryKey Key;
+  vtkNew<vtkUnstructuredGrid> Last;
+  bool Valid = false;
+  double Margin = 0.0;
+  vtkIdType Counts[5] = { 0, 0, 0, 0, 0 }; // imaginary, Steiner, added, merged, dropped
+};
+
+//------------------------------------------------------------------------------
+vtkUnstructuredGridConvexify::vtkUnstructuredGridConvexify()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkUnstructuredGridConvexify::~vtkUnstructuredGridConvexify() = default;
+
+//------------------------------------------------------------------------------
+const char* vtkUnstructuredGridConvexify::BoundaryCellArrayName()
+{
+  return ppiray::BoundaryCellArrayName;
+}
+
+//------------------------------------------------------------------------------
+int vtkUnstructuredGridConvexify::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0]);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  this->NumberOfImaginaryCells = 0;
+  this->NumberOfSteinerPoints = 0;
+  this->NumberOfAddedPoints = 0;
+  this->NumberOfMergedPoints = 0;
+  this->NumberOfDroppedTriangles = 0;
+  this->ExecutionTime = 0.0;
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  // Every early return leaves the input as the output.
+  output->ShallowCopy(input);
+  if (!input->GetPoints() || input->GetNumberOfCells() == 0)
+  {
+    return 1;
+  }
+  if (!AllFinite(input->GetPoints()))
+  {
+    vtkErrorMacro("Infinite or NaN point coordinates: the grid was not convexified.");
+    return 1;
+  }
+  vtkInternals& last = *this->Internals;
+  const bool sameGeometry = last.Key.Update(input) != ppiray::GridGeometryKey::Match::Changed;
+  if (sameGeometry && last.Valid && last.Margin == this->Margin)
+  {
+    WithAttributesOf(input, last.Last, output);
+    this->NumberOfImaginaryCells = last.Counts[0];
+    this->NumberOfSteinerPoints = last.Counts[1];
+    this->NumberOfAddedPoints = last.Counts[2];
+    this->NumberOfMergedPoints = last.Counts[3];
+    this->NumberOfDroppedTriangles = last.Counts[4];
+    timer->StopTimer();
+    this->ExecutionTime = timer->GetElapsedTime();
+    return 1;
+  }
+  last.Valid = false;
+  vtkIdType invalidCells = 0;
+  vtkSmartPointer<vtkUnstructuredGrid> grid =
+    ppiray::EmptyCellsWithInvalidPointIds(input, invalidCells);
+  if (invalidCells > 0)
+  {
+    vtkWarningMacro(<< invalidCells << " cells with point ids outside [0, "
+                    << input->GetNumberOfPoints() << ") were emptied.");
+  }
+  else
+  {
+    grid = input;
+  }
+
+  // The fill sees the mesh with coincident points shared (the output keeps
+  // the input's cells; imaginary cells use the first id at each place).
+  vtkIdType mergedPoints = 0;
+  vtkSmartPointer<vtkUnstructuredGrid> sealed = WithCoincidentPointsShared(grid, mergedPoints);
+  ppiray::TetrahedralSplit split;
+  ppiray::SplitIntoTetrahedra(sealed ? sealed.Get() : grid.Get(), false, split);
+  if (split.GetNumberOfUnsupportedCells() > 0)
+  {
+    vtkWarningMacro(<< split.GetNumberOfUnsupportedCells()
+                    << " cells that are not linear or quadratic 3D cells are left out: imaginary "
+                       "cells may fill their space.");
+  }
+  const vtkIdType numberOfTets = static_cast<vtkIdType>(split.CellIds.size());
+  if (numberOfTets == 0)
+  {
+    vtkWarningMacro("No 3D cells: nothing to convexify.");
+    return 1;
+  }
+  this->UpdateProgress(0.05);
+
+  // The boundary: triangles of the conforming split with no neighbour.
+  const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
+  std::vector<vtkIdType> triangles, owner;
+  OutwardBoundaryTriangles(grid, split, triangles, owner);
+
+  // The box: the bounds of the points the cells use, inflated.
+  std::vector<double> xyz(3 * numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    grid->GetPoints()->GetPoint(i, &xyz[3 * i]);
+  }
+  double box[6] = { std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max() };
+  for (vtkIdType id : split.Tets)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      box[2 * a] = std::min(box[2 * a], xyz[3 * id + a]);
+      box[2 * a + 1] = std::max(box[2 * a + 1], xyz[3 * id + a]);
+    }
+  }
+  const double diagonal =
+    std::sqrt((box[1] - box[0]) * (box[1] - box[0]) + (box[3] - box[2]) * (box[3] - box[2]) +
+              (box[5] - box[4]) * (box[5] - box[4]));
+  const double margin = this->Margin * (diagonal > 0.0 ? diagonal : 1.0);
+  for (int a = 0; a < 3; ++a)
+  {
+    box[2 * a] -= margin;
+    box[2 * a + 1] += margin;
+  }
+
+  const ppiray::ImaginaryTetrahedra fill = ppiray::FillBoxAroundSurface(
+    xyz, triangles, box, [this](double done) { this->UpdateProgress(0.1 + 0.8 * done); });
+  this->NumberOfMergedPoints = mergedPoints;
+  this->NumberOfDroppedTriangles = fill.DroppedTriangles;
+  if (!fill.Error.empty())
+  {
+    vtkErrorMacro("Not convexified: " << fill.Error << ".");
+    return 1;
+  }
+
+  AppendImaginaryCells(grid, fill, owner, output);
+  last.Last->ShallowCopy(output);
+  last.Valid = true;
+  last.Margin = this->Margin;
+
+  const vtkIdType numberOfImaginary = static_cast<vtkIdType>(fill.Tets.size() / 4);
   this->NumberOfImaginaryCells = numberOfImaginary;
   this->NumberOfSteinerPoints = fill.SteinerPoints;
   this->NumberOfAddedPoints = static_cast<vtkIdType>(fill.NewPoints.size());
+  last.Counts[0] = this->NumberOfImaginaryCells;
+  last.Counts[1] = this->NumberOfSteinerPoints;
+  last.Counts[2] = this->NumberOfAddedPoints;
+  last.Counts[3] = this->NumberOfMergedPoints;
+  last.Counts[4] = this->NumberOfDroppedTriangles;
   timer->StopTimer();
   this->ExecutionTime = timer->GetElapsedTime();
   return 1;

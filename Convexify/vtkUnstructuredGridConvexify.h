@@ -27,12 +27,18 @@
  * at an O-grid's cut). A boundary that still intersects itself (tangled or
  * overlapping cells) bounds no volume: an error says so and the output is
  * the input, unchanged.
+ *
+ * A time series: an input with the geometry of the last one convexified (the
+ * same points, cells, types, faces and hidden flags: ppiray::GridGeometryKey)
+ * keeps its fill; only the point and cell arrays are the new input's.
  */
 #ifndef vtkUnstructuredGridConvexify_h
 #define vtkUnstructuredGridConvexify_h
 
 #include "ppirayConvexifyModule.h" // for export macro
 #include "vtkUnstructuredGridAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
 
 class PPIRAYCONVEXIFY_EXPORT vtkUnstructuredGridConvexify : public vtkUnstructuredGridAlgorithm
 {
@@ -70,8 +76,8 @@ public:
   static const char* BoundaryCellArrayName();
 
 protected:
-  vtkUnstructuredGridConvexify() = default;
-  ~vtkUnstructuredGridConvexify() override = default;
+  vtkUnstructuredGridConvexify();
+  ~vtkUnstructuredGridConvexify() override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double Margin = 0.02;
@@ -83,6 +89,9 @@ protected:
   double ExecutionTime = 0.0;
 
 private:
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+
   vtkUnstructuredGridConvexify(const vtkUnstructuredGridConvexify&) = delete;
   void operator=(const vtkUnstructuredGridConvexify&) = delete;
 };

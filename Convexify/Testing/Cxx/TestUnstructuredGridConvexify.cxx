@@ -12,6 +12,10 @@
 // - the input's points and cells come first, unchanged; HIDDENCELL marks
 //   exactly the imaginary cells; "ppirayBoundaryCell" names a cell whose
 //   boundary the face lies on; no NaN anywhere.
+// A time series: a new grid with the same geometry and new scalars keeps the
+// fill (the last output's points and cells arrays, the same counts) with the
+// new scalars, equal to a fresh filter's output in every point, cell and
+// array; a moved point makes a new fill (equal to a fresh one again).
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
@@ -434,6 +438,104 @@ int Check(const char* name, vtkUnstructuredGrid* input, bool seam = false)
     inputFaces.size());
   return errors;
 }
+
+// Whether two outputs hold the same points, cells and arrays (value by value).
+bool SameOutput(vtkUnstructuredGrid* a, vtkUnstructuredGrid* b)
+{
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() ||
+      a->GetNumberOfCells() != b->GetNumberOfCells())
+  {
+    return false;
+  }
+  auto same = [](vtkDataArray* x, vtkDataArray* y)
+  {
+    if (!x || !y || x->GetNumberOfValues() != y->GetNumberOfValues())
+    {
+      return x == y;
+    }
+    for (vtkIdType i = 0; i < x->GetNumberOfValues(); ++i)
+    {
+      if (x->GetVariantValue(i) != y->GetVariantValue(i))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  bool equal = same(a->GetPoints()->GetData(), b->GetPoints()->GetData()) &&
+               same(a->GetCells()->GetConnectivityArray(), b->GetCells()->GetConnectivityArray()) &&
+               same(a->GetCells()->GetOffsetsArray(), b->GetCells()->GetOffsetsArray()) &&
+               a->GetPointData()->GetNumberOfArrays() == b->GetPointData()->GetNumberOfArrays() &&
+               a->GetCellData()->GetNumberOfArrays() == b->GetCellData()->GetNumberOfArrays();
+  for (int k = 0; equal && k < a->GetPointData()->GetNumberOfArrays(); ++k)
+  {
+    equal = same(a->GetPointData()->GetArray(k),
+      b->GetPointData()->GetArray(a->GetPointData()->GetArrayName(k)));
+  }
+  for (int k = 0; equal && k < a->GetCellData()->GetNumberOfArrays(); ++k)
+  {
+    equal = same(
+      a->GetCellData()->GetArray(k), b->GetCellData()->GetArray(a->GetCellData()->GetArrayName(k)));
+  }
+  return equal;
+}
+
+// A time series through one filter (see the top): the number of errors.
+int CheckTimeSteps()
+{
+  auto first = Lattice(4, 0, 1, [](int i, int j, int k) { return i == 1 && j == 2 && k == 2; });
+  vtkNew<vtkUnstructuredGridConvexify> convexify;
+  convexify->SetInputData(first);
+  convexify->Update();
+  vtkNew<vtkUnstructuredGrid> before;
+  before->ShallowCopy(convexify->GetOutput());
+  const vtkIdType imaginary = convexify->GetNumberOfImaginaryCells();
+
+  vtkNew<vtkUnstructuredGrid> next; // the next step: same arrays, new scalars
+  next->ShallowCopy(first);
+  vtkNew<vtkDoubleArray> scalars;
+  scalars->SetName("s");
+  for (vtkIdType p = 0; p < next->GetNumberOfPoints(); ++p)
+  {
+    scalars->InsertNextValue(5.0 - p % 7);
+  }
+  vtkNew<vtkPointData> data;
+  data->SetScalars(scalars);
+  next->GetPointData()->ShallowCopy(data);
+  int errors = 0;
+  auto expect = [&](vtkUnstructuredGrid* input, bool kept, const char* step)
+  {
+    convexify->SetInputData(input);
+    convexify->Update();
+    vtkUnstructuredGrid* output = convexify->GetOutput();
+    vtkNew<vtkUnstructuredGridConvexify> fresh;
+    fresh->SetInputData(input);
+    fresh->Update();
+    const bool shared =
+      output->GetPoints()->GetData() == before->GetPoints()->GetData() &&
+      output->GetCells()->GetConnectivityArray() == before->GetCells()->GetConnectivityArray();
+    const bool equal = SameOutput(output, fresh->GetOutput());
+    std::cout << "time step, " << step << ": fill kept " << shared << ", equal to a fresh one "
+              << equal << ", imaginary cells " << convexify->GetNumberOfImaginaryCells() << "\n";
+    if (shared != kept || !equal || (kept && convexify->GetNumberOfImaginaryCells() != imaginary) ||
+        output->GetPointData()->GetScalars()->GetTuple1(3) !=
+          input->GetPointData()->GetScalars()->GetTuple1(3))
+    {
+      std::cout << "FAILED: time step, " << step << ": expected the fill "
+                << (kept ? "kept" : "made again") << " and the output equal to a fresh one\n";
+      ++errors;
+    }
+    before->ShallowCopy(output);
+  };
+  expect(next, true, "same geometry, new scalars");
+  vtkNew<vtkUnstructuredGrid> moved;
+  moved->DeepCopy(next);
+  double x[3];
+  moved->GetPoint(0, x);
+  moved->GetPoints()->SetPoint(0, x[0] - 0.05, x[1], x[2]);
+  expect(moved, false, "a point moved");
+  return errors;
+}
 }
 
 int TestUnstructuredGridConvexify(int, char*[])
@@ -591,5 +693,6 @@ int TestUnstructuredGridConvexify(int, char*[])
       ++errors;
     }
   }
+  errors += CheckTimeSteps();
   return errors ? 1 : 0;
 }
