@@ -44,11 +44,9 @@ def write_series(folder, hexahedra, deforming=False):
     """The series as step<k>.vtu files and a .pvd naming them; its path."""
     import math
     from vtkmodules.vtkCommonCore import vtkDoubleArray
-    from vtkmodules.vtkCommonDataModel import vtkImageData
+    from vtkmodules.vtkCommonDataModel import vtkImageData, vtkUnstructuredGrid
     from vtkmodules.vtkFiltersCore import vtkAppendFilter
     from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
-    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
-    os.makedirs(folder, exist_ok=True)
     image = vtkImageData()
     image.SetDimensions(9, 9, 9)
     image.SetOrigin(-1.0, -1.0, -1.0)
@@ -60,7 +58,7 @@ def write_series(folder, hexahedra, deforming=False):
     cells.SetInputData(image)
     cells.Update()
     grid = cells.GetOutput()
-    entries = []
+    grids = []
     material = [grid.GetPoint(p) for p in range(grid.GetNumberOfPoints())]
     for k in range(STEPS):
         if deforming:
@@ -76,16 +74,10 @@ def write_series(folder, hexahedra, deforming=False):
             x, y, z = material[p]
             values.InsertNextValue(math.sin(3.0 * x + 0.4 * k) * math.cos(2.0 * y) + z * z)
         grid.GetPointData().SetScalars(values)
-        name = "step%d.vtu" % k
-        writer = vtkXMLUnstructuredGridWriter()
-        writer.SetInputData(grid)
-        writer.SetFileName(os.path.join(folder, name))
-        writer.Write()
-        entries.append('    <DataSet timestep="%d" file="%s"/>' % (k, name))
-    path = os.path.join(folder, "series.pvd")
-    with open(path, "w") as f:
-        f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'
-                "  <Collection>\n%s\n  </Collection>\n</VTKFile>\n" % "\n".join(entries))
+        step = vtkUnstructuredGrid()
+        step.DeepCopy(grid)
+        grids.append(step)
+    path = pt.write_pvd(folder, grids)
     return path, grid.GetNumberOfCells()
 
 

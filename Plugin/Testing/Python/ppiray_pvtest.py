@@ -49,6 +49,26 @@ def finish(failures):
         raise RuntimeError("%d check(s) failed" % len(failures))
 
 
+def write_pvd(folder, grids):
+    """A time series: `grids` as step<k>.vtu (time k) and a series.pvd naming
+    them, in `folder`; the .pvd's path."""
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
+    os.makedirs(folder, exist_ok=True)
+    entries = []
+    for k, grid in enumerate(grids):
+        name = "step%d.vtu" % k
+        writer = vtkXMLUnstructuredGridWriter()
+        writer.SetInputData(grid)
+        writer.SetFileName(os.path.join(folder, name))
+        writer.Write()
+        entries.append('    <DataSet timestep="%d" file="%s"/>' % (k, name))
+    path = os.path.join(folder, "series.pvd")
+    with open(path, "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'
+                "  <Collection>\n%s\n  </Collection>\n</VTKFile>\n" % "\n".join(entries))
+    return path
+
+
 def render_view(size=(300, 300)):
     view = CreateView("RenderView")
     view.ViewSize = list(size)
