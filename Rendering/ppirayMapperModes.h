@@ -40,6 +40,14 @@ enum TetrahedronLayout
   TetrahedronCompact = 1
 };
 
+// How rays that leave a non-convex mesh and enter it again are followed.
+enum NonConvexMode
+{
+  NonConvexPeel = 0,
+  NonConvexConvexify = 1,
+  NonConvexAutomatic = 2
+};
+
 // What a ray accumulates: composite, or a projection (the blend mode's
 // value, vtkVolumeMapper's: maximum, minimum, average intensity, additive).
 enum Projection

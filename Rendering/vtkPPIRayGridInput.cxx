@@ -38,6 +38,19 @@ vtkPPIRayGridInput::vtkPPIRayGridInput() = default;
 vtkPPIRayGridInput::~vtkPPIRayGridInput() = default;
 
 //------------------------------------------------------------------------------
+vtkUnstructuredGridBase* vtkPPIRayGridInput::Rendered(vtkUnstructuredGridBase* input, int mode,
+  vtkUnstructuredGridAlgorithm* convexifier, vtkObject* reporter)
+{
+  const bool convexify = mode == ppiray::NonConvexConvexify ||
+                         (mode == ppiray::NonConvexAutomatic && this->Choice.Convexifies(input));
+  this->LastMode = mode;
+  this->LastRendered = convexify ? this->Convexified(input, convexifier, reporter) : input;
+  this->LastChoice =
+    this->LastRendered != input ? ppiray::NonConvexConvexify : ppiray::NonConvexPeel;
+  return this->LastRendered;
+}
+
+//------------------------------------------------------------------------------
 vtkUnstructuredGridBase* vtkPPIRayGridInput::Convexified(
   vtkUnstructuredGridBase* input, vtkUnstructuredGridAlgorithm* convexifier, vtkObject* reporter)
 {

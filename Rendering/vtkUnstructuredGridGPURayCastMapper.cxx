@@ -45,6 +45,9 @@ static_assert(int(Mapper::PARTIAL_PRE_INTEGRATION) == ppiray::PartialPreIntegrat
                 int(Mapper::HEXAHEDRON_SUBDIVIDE) == ppiray::HexahedronSubdivide &&
                 int(Mapper::TETRAHEDRON_PLANES) == ppiray::TetrahedronPlanes &&
                 int(Mapper::TETRAHEDRON_COMPACT) == ppiray::TetrahedronCompact &&
+                int(Mapper::NON_CONVEX_PEEL) == ppiray::NonConvexPeel &&
+                int(Mapper::NON_CONVEX_CONVEXIFY) == ppiray::NonConvexConvexify &&
+                int(Mapper::NON_CONVEX_AUTOMATIC) == ppiray::NonConvexAutomatic &&
                 int(Mapper::MAXIMUM_INTENSITY_BLEND) == ppiray::MaximumIntensity &&
                 int(Mapper::MINIMUM_INTENSITY_BLEND) == ppiray::MinimumIntensity &&
                 int(Mapper::AVERAGE_INTENSITY_BLEND) == ppiray::AverageIntensity &&
@@ -138,19 +141,20 @@ vtkCxxSetObjectMacro(
 vtkUnstructuredGridBase* vtkUnstructuredGridGPURayCastMapper::RenderedGrid(
   vtkUnstructuredGridBase* input)
 {
-  if (this->NonConvexMode != NON_CONVEX_CONVEXIFY)
+  if (this->NonConvexMode != NON_CONVEX_PEEL && !this->Convexifier)
   {
-    return input;
-  }
-  if (!this->Convexifier)
-  {
-    // One registered with VTK's object factory: loading PPIRay::Convexify
-    // registers vtkUnstructuredGridConvexify (this module does not link it).
+    // One registered with VTK's object factory (by PPIRay::Convexify, not linked here).
     auto made = vtkSmartPointer<vtkObject>::Take(
       vtkObjectFactory::CreateInstance("vtkUnstructuredGridConvexify"));
     this->SetConvexifier(vtkUnstructuredGridAlgorithm::SafeDownCast(made));
   }
-  return this->Internals->GridInput.Convexified(input, this->Convexifier, this);
+  return this->Internals->GridInput.Rendered(input, this->NonConvexMode, this->Convexifier, this);
+}
+
+//------------------------------------------------------------------------------
+int vtkUnstructuredGridGPURayCastMapper::GetNonConvexChoice()
+{
+  return this->Internals->GridInput.GetNonConvexChoice();
 }
 
 //------------------------------------------------------------------------------
@@ -455,6 +459,7 @@ void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolum
     std::max(0, in.Peeling.Render(context, frame, *in.Cells, *march, marchInputs, cut, this));
   statistics.NumberOfContinuations = in.Peeling.GetNumberOfContinuations();
   statistics.NumberOfCellSteps = static_cast<vtkIdType>(in.Peeling.GetNumberOfCellSteps());
+  in.GridInput.ObserveFrame(statistics.NumberOfPeels, in.Mesh.GetNumberOfHexahedra() > 0);
   if (cut)
   {
     vtkWarningMacro(
@@ -477,9 +482,7 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
      << "\n";
   os << indent << "VectorComponent: " << this->VectorComponent << "\n";
   os << indent << "MaximumNumberOfPeels: " << this->MaximumNumberOfPeels << "\n";
-  os << indent << "NonConvexMode: "
-     << (this->NonConvexMode == NON_CONVEX_CONVEXIFY ? "NON_CONVEX_CONVEXIFY" : "NON_CONVEX_PEEL")
-     << "\n";
+  os << indent << "NonConvexMode: " << this->NonConvexMode << "\n";
   os << indent << "Convexifier: " << this->Convexifier << "\n";
   os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
   os << indent << "PsiTableSize: " << this->PsiTableSize << "\n";

@@ -280,16 +280,24 @@ public:
    * once — one peel where no boundary face is split by Steiner points
    * (Documentation/convexification.md). Without a Convexifier, or for an
    * input that is not a vtkUnstructuredGrid, it warns once and peels.
+   * NON_CONVEX_AUTOMATIC: peels, and from what the first frame of a geometry
+   * measured (peels; then the fill's size and the peels convexified)
+   * chooses one of the two for it (ppirayNonConvexChoice.h states the rule);
+   * GetNonConvexChoice() says which.
    */
   enum NonConvexModes
   {
     NON_CONVEX_PEEL = 0,
-    NON_CONVEX_CONVEXIFY = 1
+    NON_CONVEX_CONVEXIFY = 1,
+    NON_CONVEX_AUTOMATIC = 2
   };
-  vtkSetClampMacro(NonConvexMode, int, NON_CONVEX_PEEL, NON_CONVEX_CONVEXIFY);
+  vtkSetClampMacro(NonConvexMode, int, NON_CONVEX_PEEL, NON_CONVEX_AUTOMATIC);
   vtkGetMacro(NonConvexMode, int);
   void SetNonConvexModeToPeel() { this->SetNonConvexMode(NON_CONVEX_PEEL); }
   void SetNonConvexModeToConvexify() { this->SetNonConvexMode(NON_CONVEX_CONVEXIFY); }
+  void SetNonConvexModeToAutomatic() { this->SetNonConvexMode(NON_CONVEX_AUTOMATIC); }
+  /** How the last frame followed the mesh: NON_CONVEX_PEEL or NON_CONVEX_CONVEXIFY. */
+  int GetNonConvexChoice();
   ///@}
 
   ///@{

@@ -7,7 +7,16 @@
 // reference of the convexified grid (hidden cells left out) is checked too.
 // Scenes: a block with a tunnel beside a second block (the non-convex test's
 // mesh), a cube with a cavity, two parts across a thin gap, the benchmark's
-// carved wavelet (graded holes).
+// carved wavelet (graded holes), three cavities in a row (a lattice: 4 peels,
+// a fill with Steiner points).
+// NON_CONVEX_AUTOMATIC on each scene, three frames: the first peels; where
+// it took at least 4 peels the second is convexified (the trial), and the
+// third too where the fill is small (imaginary cells at most the cells,
+// Steiner points at most 1e-3 of the points), else it peels; each frame's
+// image is the peeled or the convexified one to the bit, as chosen
+// (GetNonConvexChoice()); a fourth frame, of a new grid with the same
+// arrays (a time series' step), keeps the third's choice. A lattice of hexahedra with holes,
+// marched natively with many peels, is peeled without trying the fill.
 
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
@@ -89,6 +98,37 @@ int Compare(const char* name, vtkUnstructuredGrid* grid, const std::array<double
   const bool modeSame =
     modeImage == convexImage && byMode->GetStatistics()->GetNumberOfPeels() == convexPeels &&
     plugged->GetNumberOfImaginaryCells() == convexify->GetNumberOfImaginaryCells();
+  // NON_CONVEX_AUTOMATIC: the choice expected from the rule, frame by frame.
+  const bool smallFill = convexify->GetNumberOfImaginaryCells() <= grid->GetNumberOfCells() &&
+                         convexify->GetNumberOfSteinerPoints() <= 1e-3 * grid->GetNumberOfPoints();
+  const bool convexifies = peels >= 4 && smallFill && convexPeels <= 2;
+  vtkNew<vtkUnstructuredGridGPURayCastMapper> automatic;
+  ppiray_test::UseTetrahedronLayout(automatic);
+  vtkNew<vtkUnstructuredGridConvexify> automaticFill;
+  automatic->SetNonConvexModeToAutomatic();
+  automatic->SetConvexifier(automaticFill);
+  scene.Volume->SetMapper(automatic);
+  automatic->SetInputData(grid);
+  std::string choices;
+  bool automaticSame = true;
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    scene.Window->Render();
+    const bool convexified = automatic->GetNonConvexChoice() == automatic->NON_CONVEX_CONVEXIFY;
+    choices += convexified ? "C" : "P";
+    // The second frame tries the fill wherever the first took 4 peels.
+    const bool expected = (frame == 1 && peels >= 4) || (frame == 2 && convexifies);
+    automaticSame = automaticSame && convexified == expected &&
+                    ppiray_test::ReadRGB(scene.Window) == (convexified ? convexImage : peeledImage);
+  }
+  // A time series' next step (a new grid, the same arrays) keeps the choice.
+  auto next = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  next->ShallowCopy(grid);
+  automatic->SetInputData(next);
+  scene.Window->Render();
+  const bool kept = automatic->GetNonConvexChoice() == automatic->NON_CONVEX_CONVEXIFY;
+  choices += kept ? "C" : "P";
+  automaticSame = automaticSame && kept == convexifies;
   std::cout << name << ": " << grid->GetNumberOfCells() << " cells + "
             << convexify->GetNumberOfImaginaryCells() << " imaginary, "
             << convexify->GetNumberOfSteinerPoints() << " Steiner points; " << peels
@@ -96,7 +136,8 @@ int Compare(const char* name, vtkUnstructuredGrid* grid, const std::array<double
             << "/255 between the two images; boundary faces joined to imaginary ones "
             << oneLayer->GetStatistics()->GetNumberOfLinkedBoundaryFaces() << " ("
             << oneLayer->GetStatistics()->GetNumberOfSplitBoundaryFaces() << " split), left open "
-            << oneLayer->GetStatistics()->GetNumberOfUnlinkedBoundaryFaces() << "\n";
+            << oneLayer->GetStatistics()->GetNumberOfUnlinkedBoundaryFaces()
+            << "; automatic, four frames: " << choices << "\n";
   // Without Steiner points every face is shared by point ids; with them the
   // split faces are crossed into their pieces (and a face met through other
   // point ids is joined too): one peel either way, every face joined.
@@ -107,6 +148,13 @@ int Compare(const char* name, vtkUnstructuredGrid* grid, const std::array<double
   {
     std::cout << "FAILED: " << name << ": expected split faces exactly with Steiner points, and "
               << "none left open\n";
+    ++errors;
+  }
+  if (!automaticSame)
+  {
+    std::cout << "FAILED: " << name << ": NON_CONVEX_AUTOMATIC chose " << choices << ", expected "
+              << (convexifies ? "PCCC" : (peels >= 4 ? "PCPP" : "PPPP"))
+              << " with the chosen images\n";
     ++errors;
   }
   if (!modeSame)
@@ -175,6 +223,15 @@ int TestGPURayCastConvexified(int argc, char* argv[])
     errors += Compare("two parts across a thin gap", grid, { 1.0, 0.35, 0.25 }, 0.0, 4.0);
   }
   {
+    // Three cavities in a row along x, seen along x: 4 peels.
+    const int n[3] = { 7, 3, 3 };
+    const double origin[3] = { 0, 0, 0 };
+    auto grid = ppiray_test::VoxelTetrahedra(
+      n, 1.0 / 3, origin, [](int i, int j, int k) { return !(i % 2 == 1 && j == 1 && k == 1); },
+      [](double x, double y, double z) { return x + y + z; });
+    errors += Compare("three cavities in a row", grid, { 1.0, 0.05, 0.03 }, 0.0, 4.0);
+  }
+  {
     vtkNew<vtkXMLUnstructuredGridReader> reader;
     reader->SetFileName((std::string(PPIRAY_SOURCE_DIR) + "/Data/graded_holes.vtu").c_str());
     reader->Update();
@@ -182,6 +239,38 @@ int TestGPURayCastConvexified(int argc, char* argv[])
     double range[2];
     grid->GetPointData()->GetScalars()->GetRange(range);
     errors += Compare("graded_holes.vtu", grid, { 1.0, 0.6, 1.4 }, range[0], range[1]);
+  }
+  {
+    // Hexahedra marched natively, three cavities in a row (4 peels): peeled,
+    // the fill never tried.
+    const int n[3] = { 7, 3, 3 };
+    const double origin[3] = { 0, 0, 0 };
+    auto grid = ppiray_test::VoxelTetrahedra(
+      n, 1.0 / 3, origin, [](int i, int j, int k) { return !(i % 2 == 1 && j == 1 && k == 1); },
+      [](double x, double y, double z) { return x + y + z; }, /*hexahedra=*/true);
+    ppiray_test::Scene scene(120, 120);
+    ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 4.0, 0.7, 0.1);
+    vtkNew<vtkUnstructuredGridGPURayCastMapper> automatic;
+    vtkNew<vtkUnstructuredGridConvexify> fill;
+    automatic->SetNonConvexModeToAutomatic();
+    automatic->SetConvexifier(fill);
+    scene.Show(automatic, grid, { 4.0, 0.55, 0.53 }, { 1.17, 0.5, 0.5 });
+    int peels = 0;
+    for (int frame = 0; frame < 3; ++frame)
+    {
+      scene.Window->Render();
+      peels = std::max(peels, automatic->GetStatistics()->GetNumberOfPeels());
+      errors += automatic->GetNonConvexChoice() == automatic->NON_CONVEX_PEEL ? 0 : 1;
+    }
+    std::cout << "hexahedra, three cavities in a row: " << peels << " peels, "
+              << automatic->GetStatistics()->GetNumberOfNativeCells() << " native cells, fill "
+              << fill->GetOutput()->GetNumberOfCells() << " cells\n";
+    if (peels < 4 || automatic->GetStatistics()->GetNumberOfNativeCells() == 0 ||
+        fill->GetOutput()->GetNumberOfCells() != 0)
+    {
+      std::cout << "FAILED: native hexahedra: expected peeled without trying the fill\n";
+      ++errors;
+    }
   }
   // NON_CONVEX_CONVEXIFY without a Convexifier: one made by VTK's object
   // factory (this module registers vtkUnstructuredGridConvexify when it is
