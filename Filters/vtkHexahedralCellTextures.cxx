@@ -248,6 +248,10 @@ void vtkHexahedralCellTextures::Clear()
 //------------------------------------------------------------------------------
 bool vtkHexahedralCellTextures::CollectCells(vtkUnstructuredGrid* grid)
 {
+  const size_t cells = static_cast<size_t>(grid->GetNumberOfCells());
+  this->CellIds.reserve(cells);
+  this->Kinds.reserve(cells);
+  this->CornerIds.reserve(8 * cells);
   ppiray::ForEachCell(grid,
     [&](vtkIdType cellId, int type, vtkIdType npts, const vtkIdType* pts)
     {
@@ -291,11 +295,17 @@ void vtkHexahedralCellTextures::DropFlatCells()
   // without them.
   const double* local = this->LocalPoints.data();
   const vtkIdType count = static_cast<vtkIdType>(this->CellIds.size());
+  std::vector<unsigned char> flat(count);
+#pragma omp parallel for schedule(static)
+  for (vtkIdType h = 0; h < count; ++h)
+  {
+    flat[h] = IsFlat(local, this->CornerIds.data() + 8 * h, this->Kinds[h]) ? 1 : 0;
+  }
   vtkIdType kept = 0;
   for (vtkIdType h = 0; h < count; ++h)
   {
     const vtkIdType* c = this->CornerIds.data() + 8 * h;
-    if (IsFlat(local, c, this->Kinds[h]))
+    if (flat[h])
     {
       ++this->NumberOfFlatHexahedra;
       --this->NumberOfCellsOfKind[this->Kinds[h]];
@@ -317,6 +327,8 @@ void vtkHexahedralCellTextures::OrientCells()
   // cell frame at a corner that has one.
   const double* local = this->LocalPoints.data();
   const vtkIdType count = this->GetNumberOfHexahedra();
+  vtkIdType mirroredCells = 0, singularFrames = 0;
+#pragma omp parallel for schedule(static) reduction(+ : mirroredCells, singularFrames)
   for (vtkIdType h = 0; h < count; ++h)
   {
     vtkIdType* c = this->CornerIds.data() + 8 * h;
@@ -330,7 +342,7 @@ void vtkHexahedralCellTextures::OrientCells()
         mirrored[i] = c[mirror[i]];
       }
       std::copy(mirrored, mirrored + 8, c);
-      ++this->NumberOfMirroredHexahedra;
+      ++mirroredCells;
     }
     if (kind != ppiray::HEXAHEDRON_KIND)
     {
@@ -350,8 +362,10 @@ void vtkHexahedralCellTextures::OrientCells()
       }
       MoveFrameToCorner(c, best);
     }
-    this->NumberOfSingularFrames += quality > 1e-6 ? 0 : 1;
+    singularFrames += quality > 1e-6 ? 0 : 1;
   }
+  this->NumberOfMirroredHexahedra += mirroredCells;
+  this->NumberOfSingularFrames += singularFrames;
 }
 
 //------------------------------------------------------------------------------
@@ -361,6 +375,7 @@ void vtkHexahedralCellTextures::StoreCorners()
   const vtkIdType count = this->GetNumberOfHexahedra();
   this->Corners.resize(24 * count);
   double diameter2 = 0;
+#pragma omp parallel for schedule(static) reduction(max : diameter2)
   for (vtkIdType h = 0; h < count; ++h)
   {
     const vtkIdType* c = this->CornerIds.data() + 8 * h;

@@ -120,7 +120,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   laps.End("points");
   // Face planes: n_f outward unit normal, d_f = n_f . (face centroid).
   this->Degenerate.assign(numberOfTets, 0);
-  this->FacePlanes.assign(compact ? 0 : 16 * numberOfTets, 0.0f);
+  this->FacePlanes.resize(compact ? 0 : 16 * numberOfTets); // every texel set below
   std::vector<signed char> orientation(numberOfTets, 1);
   std::atomic<vtkIdType> degenerate(0), inverted(0);
   double maximumEdge = 0.0;

@@ -38,10 +38,11 @@
 #ifndef vtkTetrahedralCellTextures_h
 #define vtkTetrahedralCellTextures_h
 
-#include "ppirayFiltersModule.h" // for export macro
-#include "ppirayPolyhedra.h"     // for ppiray::AddedPoints
-#include "ppirayStageTimes.h"    // for ppiray::StageTimes
-#include "vtkNew.h"              // for vtkNew
+#include "ppirayFiltersModule.h"       // for export macro
+#include "ppirayPolyhedra.h"           // for ppiray::AddedPoints
+#include "ppirayStageTimes.h"          // for ppiray::StageTimes
+#include "ppirayUninitializedVector.h" // for ppiray::UninitializedVector
+#include "vtkNew.h"                    // for vtkNew
 #include "vtkObject.h"
 #include "vtkUnstructuredGridCellAdjacency.h" // for the adjacency kept between builds
 
@@ -150,7 +151,7 @@ public:
    * 16 floats per tetrahedron: (n_f, d_f) for faces f = 0..3; a flat
    * tetrahedron's corners (x_v, FlatCellMarker()) for v = 0..3.
    */
-  const std::vector<float>& GetFacePlanes() const { return this->FacePlanes; }
+  const ppiray::UninitializedVector<float>& GetFacePlanes() const { return this->FacePlanes; }
   /**
    * 4 ints per tetrahedron: the neighbour code through face f (NeighborCode());
    * then the lists of split faces' pieces.
@@ -257,7 +258,7 @@ protected:
   std::vector<vtkIdType> CellIds;
   std::vector<unsigned char> Degenerate;
   std::vector<unsigned char> Hidden;
-  std::vector<float> FacePlanes;
+  ppiray::UninitializedVector<float> FacePlanes; // filled whole by the planes' parallel loop
   std::vector<int> Neighbors;
   std::vector<float> Field;
   std::vector<int> CellCorners;
