@@ -296,7 +296,12 @@ bool QuadDiagonals::AlongFirstDiagonal(vtkIdType a, vtkIdType b, vtkIdType c, vt
 //------------------------------------------------------------------------------
 void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, TetrahedralSplit& split)
 {
-  split = TetrahedralSplit();
+  // Cleared, not replaced: the storage passed in (a rebuild's) is reused.
+  split.Tets.clear();
+  split.CellIds.clear();
+  split.Added = AddedPoints();
+  split.NumberOfSplitCells = split.NumberOfPolyhedra = split.NumberOfQuadraticCells = 0;
+  split.Unsupported.clear();
   if (!grid)
   {
     return;

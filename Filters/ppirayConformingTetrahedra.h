@@ -112,7 +112,8 @@ PPIRAYFILTERS_EXPORT void ExtractTetrahedra(vtkUnstructuredGrid* grid, std::vect
  * The tetrahedra of `grid`: its tetrahedra as they are and, unless
  * `tetrahedraOnly`, the conforming split of its hexahedra, voxels, wedges and
  * pyramids (linear or not) and its polyhedra (ppirayPolyhedra.h: with points
- * added). Other cells are counted in Unsupported.
+ * added). Other cells are counted in Unsupported. `split` is cleared first,
+ * its vectors' storage kept (a rebuild passes the last one's in).
  */
 PPIRAYFILTERS_EXPORT void SplitIntoTetrahedra(
   vtkUnstructuredGrid* grid, bool tetrahedraOnly, TetrahedralSplit& split);

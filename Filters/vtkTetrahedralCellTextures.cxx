@@ -54,6 +54,8 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->Stages.Clear();
   ppiray::StageTimes::Laps laps(this->Stages, ppiray::ProgressEvents(this, 6));
   ppiray::TetrahedralSplit split;
+  split.Tets.swap(this->Tets); // the last build's storage, reused (no fresh pages)
+  split.CellIds.swap(this->CellIds);
   ppiray::SplitIntoTetrahedra(grid, /*tetrahedraOnly=*/false, split);
   this->NumberOfUnsupportedCells = split.GetNumberOfUnsupportedCells();
   this->NumberOfSplitCells = split.NumberOfSplitCells;
