@@ -243,7 +243,6 @@ struct vtkUnstructuredGridConvexify::vtkInternals
   vtkNew<vtkUnstructuredGrid> Last;
   bool Valid = false;
   double Margin = 0.0;
-  vtkIdType Counts[5] = { 0, 0, 0, 0, 0 }; // imaginary, Steiner, added, merged, dropped
 };
 
 //------------------------------------------------------------------------------
@@ -271,6 +270,19 @@ int vtkUnstructuredGridConvexify::RequestData(
   {
     return 0;
   }
+  // The geometry of the last fill (its counts still stand): only the arrays are new.
+  vtkInternals& last = *this->Internals;
+  const bool sameGeometry = last.Key.Update(input) != ppiray::GridGeometryKey::Match::Changed;
+  if (sameGeometry && last.Valid && last.Margin == this->Margin)
+  {
+    vtkNew<vtkTimerLog> reuse;
+    reuse->StartTimer();
+    WithAttributesOf(input, last.Last, output);
+    reuse->StopTimer();
+    this->ExecutionTime = reuse->GetElapsedTime();
+    return 1;
+  }
+  last.Valid = false;
   this->NumberOfImaginaryCells = 0;
   this->NumberOfSteinerPoints = 0;
   this->NumberOfAddedPoints = 0;
@@ -290,21 +302,6 @@ int vtkUnstructuredGridConvexify::RequestData(
     vtkErrorMacro("Infinite or NaN point coordinates: the grid was not convexified.");
     return 1;
   }
-  vtkInternals& last = *this->Internals;
-  const bool sameGeometry = last.Key.Update(input) != ppiray::GridGeometryKey::Match::Changed;
-  if (sameGeometry && last.Valid && last.Margin == this->Margin)
-  {
-    WithAttributesOf(input, last.Last, output);
-    this->NumberOfImaginaryCells = last.Counts[0];
-    this->NumberOfSteinerPoints = last.Counts[1];
-    this->NumberOfAddedPoints = last.Counts[2];
-    this->NumberOfMergedPoints = last.Counts[3];
-    this->NumberOfDroppedTriangles = last.Counts[4];
-    timer->StopTimer();
-    this->ExecutionTime = timer->GetElapsedTime();
-    return 1;
-  }
-  last.Valid = false;
   vtkIdType invalidCells = 0;
   vtkSmartPointer<vtkUnstructuredGrid> grid =
     ppiray::EmptyCellsWithInvalidPointIds(input, invalidCells);
@@ -385,15 +382,9 @@ int vtkUnstructuredGridConvexify::RequestData(
   last.Valid = true;
   last.Margin = this->Margin;
 
-  const vtkIdType numberOfImaginary = static_cast<vtkIdType>(fill.Tets.size() / 4);
-  this->NumberOfImaginaryCells = numberOfImaginary;
+  this->NumberOfImaginaryCells = static_cast<vtkIdType>(fill.Tets.size() / 4);
   this->NumberOfSteinerPoints = fill.SteinerPoints;
   this->NumberOfAddedPoints = static_cast<vtkIdType>(fill.NewPoints.size());
-  last.Counts[0] = this->NumberOfImaginaryCells;
-  last.Counts[1] = this->NumberOfSteinerPoints;
-  last.Counts[2] = this->NumberOfAddedPoints;
-  last.Counts[3] = this->NumberOfMergedPoints;
-  last.Counts[4] = this->NumberOfDroppedTriangles;
   timer->StopTimer();
   this->ExecutionTime = timer->GetElapsedTime();
   return 1;

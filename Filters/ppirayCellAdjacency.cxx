@@ -170,6 +170,13 @@ int SideOfPlane(const FacePlane& plane, const CellFaceMesh& mesh, vtkIdType cell
   return side > 0 ? 1 : (side < 0 ? -1 : 0);
 }
 
+// Two cells paired across a face fold there when both lie on the same side
+// of it (neither flat: a flat cell's side is 0).
+bool Folds(int side, int mateSide)
+{
+  return side != 0 && side == mateSide;
+}
+
 // A cell face on a shared face: the side of the face its cell lies on (0
 // without coordinates), and whether the cell is flat.
 struct FaceEntry
@@ -527,8 +534,7 @@ CellAdjacency MatchCellFaces(const CellFaceMesh& mesh)
           const FaceEntry& mate = entries[partner[i]];
           result.Neighbors[slot] = mate.Cell;
           result.NeighborFaces[slot] = static_cast<signed char>(mate.Face);
-          const bool isFolded =
-            !entries[i].Flat && !mate.Flat && entries[i].Side != 0 && entries[i].Side == mate.Side;
+          const bool isFolded = !entries[i].Flat && !mate.Flat && Folds(entries[i].Side, mate.Side);
           result.Folded[slot] = isFolded ? 1 : 0;
           localFolded += isFolded ? 1 : 0;
         }
@@ -588,8 +594,7 @@ bool RefoldCellFaces(const CellFaceMesh& mesh, CellAdjacency& adjacency)
       }
       vtkIdType ids[4];
       const FacePlane plane = PlaneOf(mesh.Points, ids, FaceIds(mesh, c, f, ids));
-      const int side = SideOfPlane(plane, mesh, c, f);
-      const bool isFolded = side != 0 && side == SideOfPlane(plane, mesh, n, g);
+      const bool isFolded = Folds(SideOfPlane(plane, mesh, c, f), SideOfPlane(plane, mesh, n, g));
       a.Folded[slot] = a.Folded[mesh.FaceSlots * n + g] = isFolded ? 1 : 0;
       folded += isFolded ? 1 : 0;
     }
@@ -620,12 +625,5 @@ const CellAdjacency& CellAdjacencyCache::Update(const CellFaceMesh& mesh)
   this->Cells = cells;
   this->Valid = true;
   return this->Adjacency;
-}
-
-//------------------------------------------------------------------------------
-void CellAdjacencyCache::Clear()
-{
-  this->Adjacency = CellAdjacency();
-  this->Valid = this->Kept = false;
 }
 }

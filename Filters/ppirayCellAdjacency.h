@@ -125,7 +125,6 @@ public:
   const CellAdjacency& Get() const { return this->Adjacency; }
   /** Whether the last Update() kept the faces' pairs (only the folds found again). */
   bool WasKept() const { return this->Kept; }
-  void Clear();
 
 private:
   CellAdjacency Adjacency;

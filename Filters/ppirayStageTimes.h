@@ -4,9 +4,8 @@
  *
  * The preparation of a frame (geometry key, validation, split, adjacency,
  * boundary, field, upload ...) reported stage by stage: each stage is timed
- * by a Scope from its creation to its end, or by Laps (from the last lap to
- * this one); a stage timed twice adds up. Laps can also report progress
- * (ProgressEvents()).
+ * by Laps (from the last lap to this one); a stage timed twice adds up. Laps can also report
+ * progress (ProgressEvents()).
  */
 #ifndef ppirayStageTimes_h
 #define ppirayStageTimes_h
@@ -29,31 +28,6 @@ public:
   {
     std::string Name;
     double Milliseconds;
-  };
-
-  /** Times the stage `name` from its construction to its destruction. */
-  class Scope
-  {
-  public:
-    Scope(StageTimes& times, std::string name)
-      : Times(times)
-      , Name(std::move(name))
-      , Start(std::chrono::steady_clock::now())
-    {
-    }
-    ~Scope()
-    {
-      const std::chrono::duration<double, std::milli> elapsed =
-        std::chrono::steady_clock::now() - this->Start;
-      this->Times.Add(this->Name, elapsed.count());
-    }
-    Scope(const Scope&) = delete;
-    Scope& operator=(const Scope&) = delete;
-
-  private:
-    StageTimes& Times;
-    std::string Name;
-    std::chrono::steady_clock::time_point Start;
   };
 
   /**

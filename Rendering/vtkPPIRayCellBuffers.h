@@ -106,6 +106,8 @@ public:
 
   /** Wall time of each stage of the last BuildGeometry(), in order. */
   virtual const ppiray::StageTimes& GetGeometryStageTimes() const = 0;
+  /** The cell layout BuildGeometry() builds (its ProgressEvents are the build's progress). */
+  virtual vtkObject* GetGeometryBuilder() const = 0;
 
   /** Centre of the mesh's bounds: every coordinate is relative to it. */
   virtual const double* GetOrigin() const = 0;

@@ -1,7 +1,6 @@
 #include "vtkPPIRayHexahedralCellBuffers.h"
 
 #include "ppirayBoundaryFaceLinks.h"
-#include "ppirayProgress.h"
 #include "vtkCellData.h"
 
 #include "vtkShaderProgram.h"
@@ -105,8 +104,6 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
 {
   this->GeometryOnGPU = this->FieldOnGPU = false;
   vtkHexahedralCellTextures& hexes = *this->Cells;
-  const ppiray::ProgressForwarding progress(
-    &hexes, reporter, ppiray::CellsProgress[0], ppiray::CellsProgress[1]);
   hexes.BuildGeometry(grid);
   if (hexes.GetNumberOfHexahedra() == 0)
   {

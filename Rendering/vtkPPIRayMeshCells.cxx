@@ -41,6 +41,11 @@ vtkPPIRayMeshCells::Status vtkPPIRayMeshCells::Update(vtkUnstructuredGridBase* i
   // Natively when the mode asks for it and the mesh allows it, else tetrahedra.
   using Result = vtkPPIRayCellBuffers::BuildResult;
   vtkPPIRayCellBuffers* buffers = &this->Native;
+  // The layouts' stages are the rebuild's progress in CellsProgress.
+  const ppiray::ProgressForwarding nativeProgress(this->Native.GetGeometryBuilder(), reporter,
+    ppiray::CellsProgress[0], ppiray::CellsProgress[1]);
+  const ppiray::ProgressForwarding tetrahedraProgress(this->Tetrahedra.GetGeometryBuilder(),
+    reporter, ppiray::CellsProgress[0], ppiray::CellsProgress[1]);
   Result result = native ? this->Native.BuildGeometry(valid, reporter) : Result::Declined;
   if (result == Result::Declined)
   {

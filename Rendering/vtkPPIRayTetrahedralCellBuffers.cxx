@@ -1,6 +1,5 @@
 #include "vtkPPIRayTetrahedralCellBuffers.h"
 
-#include "ppirayProgress.h"
 #include "vtkShaderProgram.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -130,8 +129,6 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayTetrahedralCellBuffers::BuildGeometry
                                         << vtkTetrahedralCellTextures::InvertedCorners() << ").");
     return BuildResult::Failed;
   }
-  const ppiray::ProgressForwarding progress(
-    this->Cells, reporter, ppiray::CellsProgress[0], ppiray::CellsProgress[1]);
   const bool built = this->Cells->BuildGeometry(grid);
   vtkTetrahedralCellTextures& cells = *this->Cells;
   if (cells.GetNumberOfUnsupportedCells() > 0)

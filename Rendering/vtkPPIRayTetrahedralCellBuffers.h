@@ -29,6 +29,7 @@ public:
   {
     return this->Cells->GetStageTimes();
   }
+  vtkObject* GetGeometryBuilder() const override { return this->Cells; }
   const double* GetOrigin() const override { return this->Cells->GetOrigin(); }
   vtkIdType GetNumberOfCells() const override { return this->Cells->GetNumberOfTetrahedra(); }
   double GetMaximumSegmentLength() const override { return this->Cells->GetMaximumEdgeLength(); }

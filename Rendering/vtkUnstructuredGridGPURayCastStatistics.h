@@ -122,7 +122,8 @@ public:
    * The stages of the last frame's preparation, in order, with their CPU
    * milliseconds: "geometry key" (whether the points and cells changed),
    * and when the cells were built "validation" and the cell layout's stages
-   * (e.g. "tetrahedra", "planes", "adjacency", "boundary"), then "field"
+   * (e.g. "tetrahedra", "planes", "adjacency" — or "folds" where a
+   * deforming mesh kept its faces' pairs —, "boundary"), then "field"
    * (scalars and transfer function), "upload" (cells and transfer function
    * to the GPU) and "integration tables" (the integration mode's tables).
    */

@@ -139,7 +139,7 @@ vtkPPIRayVolumeRepresentation::vtkPPIRayVolumeRepresentation()
 {
   this->AddVolumeMapper(PPIRayMapperName, this->Mapper);
   this->Superclass::SetActiveVolumeMapper(PPIRayMapperName);
-  this->Mapper->AddObserver(
+  this->ProgressObserver = this->Mapper->AddObserver(
     vtkCommand::ProgressEvent, this, &vtkPPIRayVolumeRepresentation::ForwardMapperProgress);
 }
 
@@ -152,6 +152,8 @@ void vtkPPIRayVolumeRepresentation::ForwardMapperProgress(vtkObject*, unsigned l
 //------------------------------------------------------------------------------
 vtkPPIRayVolumeRepresentation::~vtkPPIRayVolumeRepresentation()
 {
+  // The superclass holds the mapper a little longer: nothing may call back here.
+  this->Mapper->RemoveObserver(this->ProgressObserver);
   this->Mapper->Delete();
 }
 

@@ -109,6 +109,7 @@ private:
   void ForwardMapperProgress(vtkObject*, unsigned long, void* progress);
 
   vtkUnstructuredGridGPURayCastMapper* Mapper;
+  unsigned long ProgressObserver = 0;
   bool PassesCellsUnsplit = false;
 };
 
