@@ -6,6 +6,7 @@
 #include "ppirayInvertedSheets.h"
 #include "ppirayLinearCellKinds.h"
 #include "ppirayMeshLocalFrame.h"
+#include "ppirayQuadraticTetrahedra.h"
 #include "ppirayReflexEdges.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -15,6 +16,7 @@
 #include "vtkHexahedronCoefficients.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
+#include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -164,6 +166,41 @@ void CellCoefficients(
   }
 }
 
+// A quadratic tetrahedron's field (ppirayQuadraticTetrahedra.h) from its
+// corner values s and the values at its mid-edge nodes `mids`: c0..c7 into
+// out[0..7], c8..c10 into out[8..10]. False, and out left linear, when a
+// mid-edge value is NaN (the cell through its corners).
+bool QuadraticCoefficients(
+  vtkDataArray* scalars, int component, const vtkIdType mids[6], const double s[8], float out[12])
+{
+  double m[6], c[ppiray::quadratic_tetrahedron::Coefficients];
+  for (int k = 0; k < 6; ++k)
+  {
+    m[k] = scalars->GetComponent(mids[k], component);
+    if (std::isnan(m[k]))
+    {
+      return false;
+    }
+  }
+  ppiray::quadratic_tetrahedron::FrameCoefficients(s, m, c);
+  for (int k = 0; k < ppiray::quadratic_tetrahedron::Coefficients; ++k)
+  {
+    out[k] = static_cast<float>(c[k]);
+  }
+  return true;
+}
+
+// MidEdgeDeviation of a quadratic tetrahedron with point ids `pts`.
+double MidEdgeDeviation(vtkPoints* points, const vtkIdType* pts)
+{
+  double x[10][3];
+  for (int i = 0; i < 10; ++i)
+  {
+    points->GetPoint(pts[i], x[i]);
+  }
+  return ppiray::quadratic_tetrahedron::MidEdgeDeviation(x);
+}
+
 struct FaceKey
 {
   std::array<vtkIdType, 4> Ids; // sorted
@@ -198,6 +235,7 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   laps.End("cells");
   this->Hidden = ppiray::HiddenCells(grid, this->CellIds);
   this->OrientCells();
+  this->MeasureCurvedEdges();
   this->StoreCorners();
   laps.End("corners");
   std::vector<vtkIdType> boundary = this->MatchFaces();
@@ -226,6 +264,7 @@ void vtkHexahedralCellTextures::Clear()
   this->CellIds.clear();
   this->Kinds.clear();
   this->CornerIds.clear();
+  this->EdgeNodeIds.clear();
   this->Corners.clear();
   this->Neighbors.clear();
   this->Coefficients.clear();
@@ -243,6 +282,8 @@ void vtkHexahedralCellTextures::Clear()
   this->NumberOfFlatHexahedra = 0;
   this->NumberOfOtherCells = 0;
   this->NumberOfQuadraticCells = 0;
+  this->NumberOfCurvedCells = 0;
+  this->MaximumMidEdgeDeviation = 0;
 }
 
 //------------------------------------------------------------------------------
@@ -262,7 +303,11 @@ bool vtkHexahedralCellTextures::CollectCells(vtkUnstructuredGrid* grid)
         ++this->NumberOfOtherCells;
         return;
       }
-      this->NumberOfQuadraticCells += shape.HigherOrder ? 1 : 0;
+      const bool quadraticField =
+        ppiray::quadratic_tetrahedron::IsQuadraticTetrahedron(type, npts) &&
+        MidEdgeDeviation(grid->GetPoints(), pts) <= ppiray::quadratic_tetrahedron::FoldingDeviation;
+      this->NumberOfQuadraticCells += shape.HigherOrder && !quadraticField ? 1 : 0;
+      this->AddEdgeNodes(quadraticField ? pts + 4 : nullptr);
       ++this->NumberOfCellsOfKind[kind];
       this->CellIds.push_back(cellId);
       this->Kinds.push_back(static_cast<unsigned char>(kind));
@@ -274,9 +319,9 @@ bool vtkHexahedralCellTextures::CollectCells(vtkUnstructuredGrid* grid)
       }
     });
   const vtkIdType all = static_cast<vtkIdType>(this->CellIds.size());
-  if (this->NumberOfCellsOfKind[ppiray::TETRAHEDRON_KIND] == all)
+  if (this->NumberOfCellsOfKind[ppiray::TETRAHEDRON_KIND] == all && this->EdgeNodeIds.empty())
   {
-    // Tetrahedra only (or nothing): the tetrahedral textures' mesh.
+    // Linear tetrahedra only (or nothing): the tetrahedral textures' mesh.
     this->CellIds.clear();
     this->Kinds.clear();
     this->CornerIds.clear();
@@ -284,6 +329,62 @@ bool vtkHexahedralCellTextures::CollectCells(vtkUnstructuredGrid* grid)
     return false;
   }
   return this->NumberOfOtherCells == 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::AddEdgeNodes(const vtkIdType* mids)
+{
+  // Six per cell from the first quadratic tetrahedron on (-1: a cell
+  // without them); none in a mesh of linear cells.
+  if (mids && this->EdgeNodeIds.empty())
+  {
+    this->EdgeNodeIds.assign(6 * this->CellIds.size(), -1);
+  }
+  if (mids || !this->EdgeNodeIds.empty())
+  {
+    for (int k = 0; k < 6; ++k)
+    {
+      this->EdgeNodeIds.push_back(mids ? mids[k] : -1);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkHexahedralCellTextures::HasEdgeNodes(vtkIdType h) const
+{
+  return !this->EdgeNodeIds.empty() && this->EdgeNodeIds[6 * h] >= 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::MeasureCurvedEdges()
+{
+  const vtkIdType count = this->GetNumberOfHexahedra();
+  if (this->EdgeNodeIds.empty())
+  {
+    return;
+  }
+  double worst = 0;
+  vtkIdType curved = 0;
+#pragma omp parallel for schedule(static) reduction(max : worst) reduction(+ : curved)
+  for (vtkIdType h = 0; h < count; ++h)
+  {
+    if (this->HasEdgeNodes(h))
+    {
+      const vtkIdType* c = this->CornerIds.data() + 8 * h;
+      const vtkIdType* m = this->EdgeNodeIds.data() + 6 * h;
+      const vtkIdType ids[10] = { c[0], c[1], c[2], c[3], m[0], m[1], m[2], m[3], m[4], m[5] };
+      double x[10][3];
+      for (int i = 0; i < 10; ++i)
+      {
+        std::copy_n(this->LocalPoints.data() + 3 * ids[i], 3, x[i]);
+      }
+      const double d = ppiray::quadratic_tetrahedron::MidEdgeDeviation(x);
+      worst = std::max(worst, d);
+      curved += d > CurvedEdgeTolerance() ? 1 : 0;
+    }
+  }
+  this->MaximumMidEdgeDeviation = worst;
+  this->NumberOfCurvedCells = curved;
 }
 
 //------------------------------------------------------------------------------
@@ -312,12 +413,17 @@ void vtkHexahedralCellTextures::DropFlatCells()
       continue;
     }
     std::copy(c, c + 8, this->CornerIds.data() + 8 * kept);
+    if (!this->EdgeNodeIds.empty())
+    {
+      std::copy_n(this->EdgeNodeIds.data() + 6 * h, 6, this->EdgeNodeIds.data() + 6 * kept);
+    }
     this->CellIds[kept] = this->CellIds[h];
     this->Kinds[kept++] = this->Kinds[h];
   }
   this->CellIds.resize(kept);
   this->Kinds.resize(kept);
   this->CornerIds.resize(8 * kept);
+  this->EdgeNodeIds.resize(this->EdgeNodeIds.empty() ? 0 : 6 * kept);
 }
 
 //------------------------------------------------------------------------------
@@ -342,6 +448,13 @@ void vtkHexahedralCellTextures::OrientCells()
         mirrored[i] = c[mirror[i]];
       }
       std::copy(mirrored, mirrored + 8, c);
+      if (this->HasEdgeNodes(h))
+      {
+        vtkIdType* mids = this->EdgeNodeIds.data() + 6 * h;
+        vtkIdType renumbered[6];
+        ppiray::quadratic_tetrahedron::RenumberEdgeNodes(mirror, mids, renumbered);
+        std::copy_n(renumbered, 6, mids);
+      }
       ++mirroredCells;
     }
     if (kind != ppiray::HEXAHEDRON_KIND)
@@ -587,18 +700,20 @@ void vtkHexahedralCellTextures::ExtractBoundary(
 bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScalars, int component)
 {
   const vtkIdType numberOfHexahedra = this->GetNumberOfHexahedra();
-  this->Coefficients.assign(8 * numberOfHexahedra, 0.0f);
+  const int stride = 4 * this->GetCoefficientTexels();
+  this->Coefficients.assign(stride * numberOfHexahedra, 0.0f);
   this->NumberOfNaNScalars = 0;
+  this->NumberOfLinearizedCells = 0;
   if (!scalars || numberOfHexahedra == 0 || component < 0 ||
       component >= scalars->GetNumberOfComponents())
   {
     return false;
   }
-  std::atomic<vtkIdType> nanCells(0);
-#pragma omp parallel for schedule(static)
+  vtkIdType nanCells = 0, linearized = 0;
+#pragma omp parallel for schedule(static) reduction(+ : nanCells, linearized)
   for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
   {
-    float* out = this->Coefficients.data() + 8 * h;
+    float* out = this->Coefficients.data() + stride * h;
     double s[8];
     bool hasNaN = false;
     if (cellScalars)
@@ -623,8 +738,14 @@ bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScala
     }
     CellCoefficients(
       this->Kinds[h], this->LocalPoints.data(), this->CornerIds.data() + 8 * h, s, out);
+    if (!cellScalars && this->HasEdgeNodes(h))
+    {
+      linearized +=
+        QuadraticCoefficients(scalars, component, this->EdgeNodeIds.data() + 6 * h, s, out) ? 0 : 1;
+    }
   }
-  this->NumberOfNaNScalars = nanCells.load();
+  this->NumberOfNaNScalars = nanCells;
+  this->NumberOfLinearizedCells = linearized;
   this->Modified();
   return true;
 }
@@ -645,4 +766,7 @@ void vtkHexahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfFlatHexahedra: " << this->NumberOfFlatHexahedra << "\n";
   os << indent << "NumberOfOtherCells: " << this->NumberOfOtherCells << "\n";
   os << indent << "NumberOfQuadraticCells: " << this->NumberOfQuadraticCells << "\n";
+  os << indent << "NumberOfCurvedCells: " << this->NumberOfCurvedCells << "\n";
+  os << indent << "MaximumMidEdgeDeviation: " << this->MaximumMidEdgeDeviation << "\n";
+  os << indent << "NumberOfLinearizedCells: " << this->NumberOfLinearizedCells << "\n";
 }

@@ -20,18 +20,26 @@
  *   1, 2, 3: exact for an affine wedge and any tetrahedron); of a pyramid its
  *   five corner values (the GPU evaluates VTK's pyramid); c0 =
  *   TransparentCellOffset() for a cell touching a NaN scalar or marked
- *   HIDDENCELL in the ghost array (ppirayHiddenCells.h).
+ *   HIDDENCELL in the ghost array (ppirayHiddenCells.h). In a mesh with
+ *   quadratic tetrahedra a third texel per cell: c8..c10, the squares' terms
+ *   of a quadratic tetrahedron's field (ppirayQuadraticTetrahedra.h; zero for
+ *   every other cell).
  *
  * Also the boundary triangles (two per boundary face, split by the same rule,
  * wound outward) with their points and, per triangle, 12 h + 2 f + (0 or 1).
  *
- * Cells: VTK_HEXAHEDRON, VTK_VOXEL, VTK_WEDGE, VTK_PYRAMID, VTK_TETRA and
- * the corners of their quadratic and higher-order forms, in one grid (a
+ * Cells: VTK_HEXAHEDRON, VTK_VOXEL, VTK_WEDGE, VTK_PYRAMID, VTK_TETRA,
+ * ten-node quadratic tetrahedra (VTK_QUADRATIC_TETRA, VTK_LAGRANGE_TETRAHEDRON
+ * of order 2: their quadratic field, in the straight-edged tetrahedron of
+ * their corners; through their corners where a mid-edge node is so far off
+ * its edge's midpoint that the cell's map may fold,
+ * ppirayQuadraticTetrahedra.h) and the corners of the other quadratic and
+ * higher-order forms, in one grid (a
  * "hexahedron" below is any of them: its kind, ppirayLinearCellKinds.h, is
  * stored with its neighbours; a kind with fewer than 8 corners repeats
  * corner 0 in the unused slots, and has fewer faces). Zero-volume ones
  * (pinched-out layers) are left out and counted (GetNumberOfFlatHexahedra()).
- * A grid with other cells, or of tetrahedra only, is only counted
+ * A grid with other cells, or of linear tetrahedra only, is only counted
  * (GetNumberOfOtherCells(); BuildGeometry() returns false and builds
  * nothing): the ray caster renders such meshes as tetrahedra. No OpenGL here.
  */
@@ -123,7 +131,7 @@ public:
    * the neighbour and the face it is entered by), the diagonal mask, the kind.
    */
   const std::vector<int>& GetNeighbors() const { return this->Neighbors; }
-  /** 8 floats per hexahedron (2 RGBA texels). */
+  /** 4 GetCoefficientTexels() floats per hexahedron. */
   const std::vector<float>& GetCoefficients() const { return this->Coefficients; }
   const std::vector<float>& GetBoundaryPoints() const { return this->BoundaryPoints; }
   const std::vector<unsigned int>& GetBoundaryTriangles() const { return this->BoundaryTriangles; }
@@ -161,7 +169,24 @@ public:
   /** Zero-volume hexahedra left out (not in GetNumberOfHexahedra()). */
   vtkGetMacro(NumberOfFlatHexahedra, vtkIdType);
   vtkGetMacro(NumberOfOtherCells, vtkIdType);
+  /** Quadratic and higher-order cells rendered through their linear corners. */
   vtkGetMacro(NumberOfQuadraticCells, vtkIdType);
+  /** Whether some cells carry a quadratic field (ten-node tetrahedra). */
+  bool HasQuadraticField() const { return !this->EdgeNodeIds.empty(); }
+  /**
+   * Quadratic tetrahedra with a mid-edge node more than CurvedEdgeTolerance()
+   * of its edge's length from the edge's midpoint: rendered in the straight
+   * tetrahedron of their corners with their field in VTK's parametric
+   * coordinates (a geometric error of about that deviation).
+   */
+  vtkGetMacro(NumberOfCurvedCells, vtkIdType);
+  vtkGetMacro(MaximumMidEdgeDeviation, double);
+  static constexpr double CurvedEdgeTolerance() { return 1e-4; }
+  /**
+   * Quadratic tetrahedra with a NaN at a mid-edge node (not at a corner):
+   * rendered linear, through their corners.
+   */
+  vtkGetMacro(NumberOfLinearizedCells, vtkIdType);
 
   ///@{
   /**
@@ -175,6 +200,11 @@ public:
   static constexpr int BytesPerHexahedron()
   {
     return 16 * (CornerTexels() + NeighborTexels() + CoefficientTexels());
+  }
+  /** Coefficient texels per cell of this mesh: one more with a quadratic field. */
+  int GetCoefficientTexels() const
+  {
+    return CoefficientTexels() + (this->HasQuadraticField() ? 1 : 0);
   }
   ///@}
 
@@ -191,8 +221,11 @@ protected:
   // The steps of BuildGeometry().
   void Clear();
   bool CollectCells(vtkUnstructuredGrid* grid); // false: not for these textures
+  void AddEdgeNodes(const vtkIdType* mids);     // a collected cell's (nullptr: none)
+  bool HasEdgeNodes(vtkIdType h) const;
   void DropFlatCells();
   void OrientCells();
+  void MeasureCurvedEdges();
   void StoreCorners();
   ppiray::CellFaceMesh FaceMesh() const; // the cells for ppiray::MatchCellFaces
   std::vector<vtkIdType> MatchFaces();   // the boundary faces, 6 h + f
@@ -207,6 +240,7 @@ protected:
   vtkIdType NumberOfCellsOfKind[4] = { 0, 0, 0, 0 };
   std::vector<unsigned char> Hidden; // ppirayHiddenCells.h
   std::vector<vtkIdType> CornerIds;
+  std::vector<vtkIdType> EdgeNodeIds; // 6 per cell, renumbered with the corners (-1: none)
   std::vector<float> Corners;
   std::vector<int> Neighbors;
   std::vector<float> Coefficients;
@@ -225,6 +259,9 @@ protected:
   vtkIdType NumberOfFlatHexahedra = 0;
   vtkIdType NumberOfOtherCells = 0;
   vtkIdType NumberOfQuadraticCells = 0;
+  vtkIdType NumberOfCurvedCells = 0;
+  double MaximumMidEdgeDeviation = 0;
+  vtkIdType NumberOfLinearizedCells = 0;
 
 private:
   ppiray::StageTimes Stages; // of the last BuildGeometry()

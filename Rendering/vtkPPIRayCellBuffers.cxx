@@ -126,6 +126,7 @@ void vtkPPIRayCellBuffers::BuildField(vtkDataArray* values, bool cellData, vtkOb
     vtkWarningWithObjectMacro(reporter,
       << empty << " " << this->GetCellName() << " have NaN scalars; they are rendered empty.");
   }
+  this->ReportField(reporter);
 }
 
 //------------------------------------------------------------------------------

@@ -199,6 +199,8 @@ protected:
   virtual Boundary GetBoundary() const = 0;
   // Builds the field texels; returns the number of cells touching a NaN value.
   virtual vtkIdType ComputeField(vtkDataArray* values, bool cellData) = 0;
+  // Warns about what the field's build changed beyond empty cells (none here).
+  virtual void ReportField(vtkObject* /*reporter*/) const {}
   // Appends a cell's section triangles to PlaneSection()'s vertices.
   static void AppendSection(
     const std::vector<glm::dvec3>& triangles, vtkIdType cell, std::vector<float>& vertices);

@@ -11,6 +11,7 @@
 #include "cell_linear_fs.h"
 #include "hexahedron_field_fs.h"
 #include "pyramid_field_fs.h"
+#include "quadratic_field_fs.h"
 
 #include "ppirayLinearCellKinds.h"
 
@@ -23,7 +24,7 @@ vtkPPIRayCellBuffers::Layout vtkPPIRayHexahedralCellBuffers::GetLayout() const
   // A face's "planes": its cell and the 6 x 2 triangles outsideFace() visits;
   // a quadrilateral has four edges across which to re-enter.
   using Cells = vtkHexahedralCellTextures;
-  return { Cells::CornerTexels(), Cells::NeighborTexels(), Cells::CoefficientTexels(), 6,
+  return { Cells::CornerTexels(), Cells::NeighborTexels(), this->Cells->GetCoefficientTexels(), 6,
     Cells::TurnBack(), 0.0f, Cells::TransparentCellOffset(), Cells::SplitFace(),
     Cells::ReentryFace(), 13, 0, 4 };
 }
@@ -48,7 +49,7 @@ std::vector<vtkPPIRayCellBuffers::CellArray> vtkPPIRayHexahedralCellBuffers::Get
     { "hexNeighbors", "the neighbours", c.GetNeighbors().data(), c.GetNeighbors().size() / 4, 4,
       VTK_INT, false },
     { "hexCoefficients", "the scalar field", c.GetCoefficients().data(),
-      Cells::CoefficientTexels() * n, 4, VTK_FLOAT, true } };
+      c.GetCoefficientTexels() * n, 4, VTK_FLOAT, true } };
 }
 
 //------------------------------------------------------------------------------
@@ -90,11 +91,14 @@ std::string vtkPPIRayHexahedralCellBuffers::GetCellShader() const
     cells.GetNumberOfCellsOfKind(ppiray::HEXAHEDRON_KIND) < cells.GetNumberOfHexahedra();
   kinds << ");\nconst bool MIXED_CELLS = " << (mixed ? "true" : "false")
         << ";\nconst bool PYRAMID_CELLS = "
-        << (cells.GetNumberOfCellsOfKind(ppiray::PYRAMID_KIND) > 0 ? "true" : "false") << ";\n";
+        << (cells.GetNumberOfCellsOfKind(ppiray::PYRAMID_KIND) > 0 ? "true" : "false")
+        << ";\nconst bool QUADRATIC_FIELD = " << (cells.HasQuadraticField() ? "true" : "false")
+        << ";\n";
   std::string glsl = cell_linear_fs;
   vtkShaderProgram::Substitute(
     glsl, "//PPIRay::HexahedronField::Impl", kinds.str() + hexahedron_field_fs);
   vtkShaderProgram::Substitute(glsl, "//PPIRay::PyramidField::Impl", pyramid_field_fs);
+  vtkShaderProgram::Substitute(glsl, "//PPIRay::QuadraticField::Impl", quadratic_field_fs);
   return glsl;
 }
 
@@ -154,6 +158,15 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
       << hexes.GetNumberOfQuadraticCells()
       << " quadratic (or higher-order) cells are rendered through their linear corners only.");
   }
+  if (hexes.GetNumberOfCurvedCells() > 0)
+  {
+    vtkWarningWithObjectMacro(reporter,
+      << hexes.GetNumberOfCurvedCells()
+      << " quadratic tetrahedra have curved edges (a mid-edge node up to "
+      << hexes.GetMaximumMidEdgeDeviation()
+      << " of its edge's length off the midpoint): rendered with the straight edges of their "
+         "corners.");
+  }
   if (hexes.GetNumberOfNonManifoldFaces() > 0)
   {
     vtkWarningWithObjectMacro(reporter,
@@ -162,6 +175,18 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
   }
   this->ReportFoldedFaces(hexes.GetNumberOfFoldedFaces(), reporter);
   return BuildResult::Built;
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayHexahedralCellBuffers::ReportField(vtkObject* reporter) const
+{
+  if (this->Cells->GetNumberOfLinearizedCells() > 0)
+  {
+    vtkWarningWithObjectMacro(
+      reporter, << this->Cells->GetNumberOfLinearizedCells()
+                << " quadratic tetrahedra have a NaN scalar at a mid-edge node (none at a corner): "
+                   "rendered linear, through their corners.");
+  }
 }
 
 //------------------------------------------------------------------------------

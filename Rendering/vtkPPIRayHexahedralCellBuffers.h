@@ -55,6 +55,7 @@ protected:
     this->Cells->BuildField(values, cellData, 0);
     return this->Cells->GetNumberOfNaNScalars();
   }
+  void ReportField(vtkObject* reporter) const override;
 
 private:
   vtkNew<vtkHexahedralCellTextures> Cells;

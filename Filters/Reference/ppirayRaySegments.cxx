@@ -5,7 +5,10 @@
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkGenericCell.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
 #include "vtkPoints.h"
+#include "vtkSmartPointer.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -133,6 +136,28 @@ void FaceCrossings(
     ts.push_back(glm::dot(point - o, d));
   }
 }
+
+// FaceCrossings of a nonlinear face (a quadratic or higher-order triangle or
+// quadrilateral) through the triangles vtkCell::Triangulate makes of its
+// nodes; `centre` is subtracted from its points as from the ray's origin.
+void NonlinearFaceCrossings(
+  vtkCell* face, const Vec3& centre, const Vec3& o, const Vec3& d, std::vector<double>& ts)
+{
+  vtkNew<vtkIdList> ids;
+  vtkNew<vtkPoints> points;
+  face->Triangulate(0, ids, points);
+  std::vector<Vec3> triangle(3);
+  for (vtkIdType t = 0; t + 2 < points->GetNumberOfPoints(); t += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      double x[3];
+      points->GetPoint(t + k, x);
+      triangle[k] = { x[0] - centre[0], x[1] - centre[1], x[2] - centre[2] };
+    }
+    FaceCrossings(triangle, o, d, ts);
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -220,26 +245,122 @@ int InterpolatedPoints(vtkCell* cell)
 }
 
 //------------------------------------------------------------------------------
+void RefineParametricCoordinates(
+  vtkCell* cell, const double x[3], double pcoords[3], double* weights, std::vector<double>& derivs)
+{
+  // Newton's method on x(p) = sum_i N_i(p) X_i - x = 0 from the p given,
+  // with the cell's own N_i and dN_i/dp (InterpolateFunctions,
+  // InterpolateDerivs), until a step is below 1e-14.
+  const int n = static_cast<int>(cell->GetNumberOfPoints());
+  derivs.resize(3 * n);
+  for (int iteration = 0; iteration < 8; ++iteration)
+  {
+    cell->InterpolateFunctions(pcoords, weights);
+    cell->InterpolateDerivs(pcoords, derivs.data());
+    glm::dmat3 jacobian(0.0); // columns dx/dr, dx/ds, dx/dt
+    Vec3 residual(-x[0], -x[1], -x[2]);
+    for (int i = 0; i < n; ++i)
+    {
+      double p[3];
+      cell->GetPoints()->GetPoint(i, p);
+      const Vec3 point(p[0], p[1], p[2]);
+      residual += weights[i] * point;
+      for (int k = 0; k < 3; ++k)
+      {
+        jacobian[k] += derivs[k * n + i] * point;
+      }
+    }
+    if (!(std::abs(glm::determinant(jacobian)) > 0))
+    {
+      break;
+    }
+    const Vec3 step = glm::inverse(jacobian) * residual;
+    for (int k = 0; k < 3; ++k)
+    {
+      pcoords[k] -= step[k];
+    }
+    if (!(std::max({ std::abs(step[0]), std::abs(step[1]), std::abs(step[2]) }) > 1e-14))
+    {
+      break;
+    }
+  }
+  cell->InterpolateFunctions(pcoords, weights);
+}
+
+//------------------------------------------------------------------------------
+int CornerCellType(int type, int& corners)
+{
+  switch (type)
+  {
+    case VTK_QUADRATIC_TETRA:
+    case VTK_LAGRANGE_TETRAHEDRON:
+    case VTK_BEZIER_TETRAHEDRON:
+      corners = 4;
+      return VTK_TETRA;
+    case VTK_QUADRATIC_HEXAHEDRON:
+    case VTK_TRIQUADRATIC_HEXAHEDRON:
+    case VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON:
+    case VTK_LAGRANGE_HEXAHEDRON:
+    case VTK_BEZIER_HEXAHEDRON:
+      corners = 8;
+      return VTK_HEXAHEDRON;
+    case VTK_QUADRATIC_WEDGE:
+    case VTK_QUADRATIC_LINEAR_WEDGE:
+    case VTK_BIQUADRATIC_QUADRATIC_WEDGE:
+    case VTK_LAGRANGE_WEDGE:
+    case VTK_BEZIER_WEDGE:
+      corners = 6;
+      return VTK_WEDGE;
+    case VTK_QUADRATIC_PYRAMID:
+      corners = 5;
+      return VTK_PYRAMID;
+    default:
+      corners = 0;
+      return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
 void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scalars,
   vtkIdType cellId, const Vec3& origin, const Vec3& direction, const Vec3& centre, double tolerance,
   std::vector<Segment>& out, long long& unresolved)
 {
-  const int n = InterpolatedPoints(cell);
+  int n = InterpolatedPoints(cell), cornerCount;
+  const int cornerType = CornerCellType(cell->GetCellType(), cornerCount);
   std::vector<double> weights(std::max(static_cast<int>(cell->GetNumberOfPoints()), 8)), values(n);
+  bool throughCorners = false;
   for (int v = 0; v < n; ++v)
   {
     values[v] = cellId >= 0 ? scalars->GetComponent(cellId, 0)
                             : scalars->GetComponent(cell->GetPointId(v), 0);
-    if (std::isnan(values[v]))
+    if (std::isnan(values[v]) && v >= cornerCount && cornerCount > 0)
+    {
+      throughCorners = true; // a NaN past the corners: the corners' linear cell's field
+    }
+    else if (std::isnan(values[v]))
     {
       return; // a cell with a NaN scalar is empty, as in the mapper
     }
+  }
+  // Through the corners: the linear cell's functions at the same parametric
+  // coordinates (the linear cell of the corners where the cell is affine).
+  vtkSmartPointer<vtkGenericCell> linear;
+  if (throughCorners)
+  {
+    linear = vtkSmartPointer<vtkGenericCell>::New();
+    linear->SetCellType(cornerType);
+    n = cornerCount;
   }
   std::vector<double> ts = { 0.0 };
   std::vector<Vec3> corners;
   for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
   {
     vtkCell* face = cell->GetFace(f);
+    if (!face->IsLinear())
+    {
+      NonlinearFaceCrossings(face, centre, origin, direction, ts);
+      continue;
+    }
     const int m = static_cast<int>(face->GetNumberOfPoints());
     corners.resize(m);
     for (int k = 0; k < m; ++k)
@@ -261,6 +382,12 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
   // along the interval comes from InterpolateFunctions (mean value
   // coordinates at x), which casts none.
   const bool polyhedron = cell->GetCellType() == VTK_POLYHEDRON;
+  // A nonlinear cell's EvaluatePosition stops its Newton iteration at about
+  // 1e-5 in parametric coordinates (vtkQuadraticTetra): refined, so that the
+  // field along the ray is smooth enough for `tolerance`.
+  const bool nonlinear = !polyhedron && !cell->IsLinear();
+  std::vector<double> derivs;
+  double midpoint[3] = { 0, 0, 0 }; // pcoords of the last inside test's point
   auto evaluate = [&](double t, double& s, bool insideTest)
   {
     double x[3], pcoords[3], dist2;
@@ -278,18 +405,35 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
     {
       cell->InterpolateFunctions(x, weights.data()); // a polyhedron's takes x itself
     }
+    else if (nonlinear && !insideTest)
+    {
+      // Inside an interval whose midpoint was found: Newton from there.
+      std::copy_n(midpoint, 3, pcoords);
+      RefineParametricCoordinates(cell, x, pcoords, weights.data(), derivs);
+    }
     else
     {
       found = cell->EvaluatePosition(x, nullptr, subId, pcoords, dist2, weights.data());
+      if (nonlinear && found != -1)
+      {
+        RefineParametricCoordinates(cell, x, pcoords, weights.data(), derivs);
+        std::copy_n(pcoords, 3, midpoint);
+      }
+    }
+    if (linear)
+    {
+      linear->InterpolateFunctions(pcoords, weights.data());
     }
     s = 0.0;
     for (int v = 0; v < n; ++v)
     {
       s += weights[v] * values[v];
     }
-    // EvaluatePosition itself accepts 1e-3 outside the parametric domain; a
-    // polyhedron's says whether x is inside.
-    return polyhedron ? found == 1 : found != -1 && cell->GetParametricDistance(pcoords) <= 1e-9;
+    // EvaluatePosition itself accepts 1e-3 outside the parametric domain, so
+    // the parametric distance decides too; it alone does not (a quadratic
+    // tetrahedron's measures r, s, t but not 1 - r - s - t); a polyhedron's
+    // says whether x is inside.
+    return found == 1 && (polyhedron || cell->GetParametricDistance(pcoords) <= 1e-9);
   };
   // [a, b] with its midpoint m known: the quarter points decide, and become
   // the midpoints of the halves. At most MaximumSplitDepth levels and

@@ -64,9 +64,21 @@ bool ClipRay(const Tetrahedron& tet, const Vec3& origin, const Vec3& direction, 
 // VTK_HEXAHEDRON); the type's own functions use the first ones.
 int InterpolatedPoints(vtkCell* cell);
 
-// The pieces of the ray inside a hexahedron, voxel, wedge, pyramid or
-// polyhedron, with the cell's own interpolation (isoparametric; a
-// polyhedron's mean value coordinates): the ray's crossings with every
+// pcoords of x in `cell` refined from EvaluatePosition's by Newton's method
+// on the cell's own functions, and the interpolation weights there.
+void RefineParametricCoordinates(vtkCell* cell, const double x[3], double pcoords[3],
+  double* weights, std::vector<double>& derivs);
+
+// The linear type of a quadratic or higher-order cell's corners (its first
+// `corners` points; 0 and 0 for other cells).
+int CornerCellType(int type, int& corners);
+
+// The pieces of the ray inside a hexahedron, voxel, wedge, pyramid,
+// polyhedron or higher-order cell, with the cell's own interpolation
+// (isoparametric; a polyhedron's mean value coordinates; a higher-order
+// cell with a NaN at a node past its corners, by the rule the mapper states,
+// through its corners: the linear cell's functions at its parametric
+// coordinates): the ray's crossings with every
 // face (FaceCrossings) cut it into intervals, an interval whose midpoint is
 // inside the cell (parametric distance 0) is inside; each inside interval is
 // split until the interpolated scalar is linear along the ray within

@@ -28,6 +28,36 @@ const vtkIdType* ReferenceCells::ItemPoints(vtkIdType t, vtkIdType& n) const
 }
 
 //------------------------------------------------------------------------------
+bool IsGeneralCell(int type)
+{
+  switch (type)
+  {
+    case VTK_HEXAHEDRON:
+    case VTK_VOXEL:
+    case VTK_WEDGE:
+    case VTK_PYRAMID:
+    case VTK_POLYHEDRON:
+    case VTK_QUADRATIC_TETRA:
+    case VTK_QUADRATIC_HEXAHEDRON:
+    case VTK_TRIQUADRATIC_HEXAHEDRON:
+    case VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON:
+    case VTK_QUADRATIC_WEDGE:
+    case VTK_QUADRATIC_LINEAR_WEDGE:
+    case VTK_BIQUADRATIC_QUADRATIC_WEDGE:
+    case VTK_QUADRATIC_PYRAMID:
+    case VTK_LAGRANGE_TETRAHEDRON:
+    case VTK_LAGRANGE_HEXAHEDRON:
+    case VTK_LAGRANGE_WEDGE:
+    case VTK_BEZIER_TETRAHEDRON:
+    case VTK_BEZIER_HEXAHEDRON:
+    case VTK_BEZIER_WEDGE:
+      return true;
+    default:
+      return false;
+  }
+}
+
+//------------------------------------------------------------------------------
 ReferenceCells CollectCells(vtkUnstructuredGrid* grid)
 {
   ReferenceCells cells;
@@ -52,43 +82,19 @@ ReferenceCells CollectCells(vtkUnstructuredGrid* grid)
     cells.Tetrahedra.resize(4 * kept);
     cells.TetrahedronCell.resize(kept);
   }
-  // Quadratic and higher-order tetrahedra: the linear tetrahedron of their
-  // corners (the first four points), as the mapper renders them.
-  for (size_t u = 0; u < unsupported.size(); u += 2)
-  {
-    const int type = static_cast<int>(unsupported[u]);
-    if (type != VTK_QUADRATIC_TETRA && type != VTK_LAGRANGE_TETRAHEDRON &&
-        type != VTK_BEZIER_TETRAHEDRON)
-    {
-      continue;
-    }
-    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
-    {
-      if (grid->GetCellType(c) == type && !hidden(c))
-      {
-        vtkIdType npts;
-        const vtkIdType* pts;
-        grid->GetCellPoints(c, npts, pts);
-        cells.Tetrahedra.insert(cells.Tetrahedra.end(), pts, pts + 4);
-        cells.TetrahedronCell.push_back(c);
-        ++cells.CornerTetrahedra;
-      }
-    }
-  }
-  // Hexahedra, voxels, wedges, pyramids and polyhedra take the general path;
-  // their points in CSR form.
+  // Every other 3D cell VTK interpolates (hexahedra, voxels, wedges,
+  // pyramids, polyhedra, and the quadratic and higher-order cells, with all
+  // their nodes) takes the general path; their points in CSR form.
   if (!unsupported.empty())
   {
     for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
     {
       const int type = grid->GetCellType(c);
-      if (type == VTK_TETRA || type == VTK_QUADRATIC_TETRA || type == VTK_LAGRANGE_TETRAHEDRON ||
-          type == VTK_BEZIER_TETRAHEDRON || hidden(c))
+      if (type == VTK_TETRA || hidden(c))
       {
         continue;
       }
-      if (type != VTK_HEXAHEDRON && type != VTK_VOXEL && type != VTK_WEDGE && type != VTK_PYRAMID &&
-          type != VTK_POLYHEDRON)
+      if (!IsGeneralCell(type))
       {
         cells.Skipped += type != VTK_EMPTY_CELL ? 1 : 0; // an empty cell holds nothing
         continue;

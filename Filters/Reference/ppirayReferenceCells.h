@@ -2,11 +2,11 @@
  * @file   ppirayReferenceCells.h
  * @brief  the cells the reference renderer integrates, and where they fall on the screen
  *
- * For vtkUnstructuredGridReferenceRenderer only. Items are the tetrahedra
- * (with quadratic and higher-order tetrahedra as the tetrahedra of their
- * corners) followed by the general cells (hexahedra, voxels, wedges,
- * pyramids: integrated with their own interpolation); other cells are
- * counted and skipped. ScreenTiles bins the items into square tiles of
+ * For vtkUnstructuredGridReferenceRenderer only. Items are the linear
+ * tetrahedra followed by the general cells (hexahedra, voxels, wedges,
+ * pyramids, polyhedra, and quadratic, Lagrange and Bezier cells with all
+ * their nodes: integrated with VTK's own interpolation, IsGeneralCell());
+ * other cells are counted and skipped. ScreenTiles bins the items into square tiles of
  * pixels by their projected bounding boxes (conservative: a cell with a
  * corner at or behind the eye plane covers every tile).
  */
@@ -32,7 +32,6 @@ struct ReferenceCells
   std::vector<vtkIdType> General;         // grid cell ids of the general cells
   std::vector<vtkIdType> GeneralOffsets = { 0 };
   std::vector<vtkIdType> GeneralPoints; // their point ids, CSR by GeneralOffsets
-  vtkIdType CornerTetrahedra = 0;       // higher-order tetrahedra taken by their corners
   vtkIdType Skipped = 0;                // cells of other types
 
   vtkIdType NumberOfTetrahedra() const
@@ -46,6 +45,9 @@ struct ReferenceCells
   /** Point ids of item t (tetrahedron t, or general cell t - NumberOfTetrahedra()). */
   const vtkIdType* ItemPoints(vtkIdType t, vtkIdType& n) const;
 };
+
+/** Whether cells of `type` take the general path. */
+bool IsGeneralCell(int type);
 
 /** The items of `grid`. */
 ReferenceCells CollectCells(vtkUnstructuredGrid* grid);

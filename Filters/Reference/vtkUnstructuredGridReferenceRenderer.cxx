@@ -69,15 +69,10 @@ vtkSmartPointer<vtkUnstructuredGrid> WithValidPointIds(
 // The cells not integrated as themselves (reported).
 void ReportCellsNotIntegrated(vtkAlgorithm* self, const ReferenceCells& cells)
 {
-  if (cells.CornerTetrahedra)
-  {
-    vtkWarningWithObjectMacro(self,
-      << cells.CornerTetrahedra << " higher-order tetrahedra rendered through their corners.");
-  }
   if (cells.Skipped)
   {
     vtkWarningWithObjectMacro(
-      self, << cells.Skipped << " cells of other types than linear 3D cells skipped.");
+      self, << cells.Skipped << " cells of other types than 3D cells skipped.");
   }
 }
 

@@ -22,14 +22,16 @@
  * Independent of the GPU path by construction (no shared traversal, transfer
  * function or integration code), so that each checks the other.
  *
- * Hexahedra, voxels, wedges and pyramids take a general path with the cell's
- * own (isoparametric) interpolation: the ray is cut at its crossings with
- * every face (triangles, and quadrilaterals as the bilinear patches the
- * interpolation spans, planar or not), the inside intervals are split until
- * the interpolated scalar is linear along the ray within QuadratureTolerance
+ * Hexahedra, voxels, wedges, pyramids, polyhedra and the quadratic,
+ * Lagrange and Bezier 3D cells take a general path with the cell's own
+ * (isoparametric) interpolation, vtkCell::EvaluatePosition: the ray is cut
+ * at its crossings with every face (triangles, quadrilaterals as the
+ * bilinear patches the interpolation spans, planar or not, and a nonlinear
+ * face as the triangles vtkCell::Triangulate makes of its nodes: exact for
+ * straight edges, a polyline through the nodes for curved ones), the
+ * intervals whose midpoint the cell contains are split until the
+ * interpolated scalar is linear along the ray within QuadratureTolerance
  * (relative to the scalar range), and each piece is integrated exactly.
- * Quadratic and higher-order tetrahedra are rendered as the linear
- * tetrahedra of their corners (as the mapper renders them), with a warning.
  * Other cell types are skipped with a warning.
  *
  * Isosurfaces (SetBlendMode(ISOSURFACE_BLEND), or embedded in the composite

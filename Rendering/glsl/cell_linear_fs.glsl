@@ -10,9 +10,12 @@
 //   hexCorners[6 h .. 6 h + 5]   up to 8 corners, 24 floats, right-handed
 //   hexNeighbors[2 h]            the neighbour codes through faces 0..3,
 //                                [2 h + 1]: faces 4, 5, the diagonal mask, kind
-//   hexCoefficients[2 h .. + 1]  c0..c7 of the field in the cell frame
-//                                (hexahedron_field_fs.glsl; a pyramid's corner
-//                                values, pyramid_field_fs.glsl; c0 = -3e38: empty)
+//   hexCoefficients[FIELD_TEXELS h .. + 1]  c0..c7 of the field in the cell
+//                                frame (hexahedron_field_fs.glsl; a pyramid's
+//                                corner values, pyramid_field_fs.glsl; c0 =
+//                                -3e38: empty); with QUADRATIC_FIELD, texel
+//                                + 2: a quadratic tetrahedron's squares' terms
+//                                (quadratic_field_fs.glsl; zero for others)
 // Each quadrilateral (q0, q1, q2, q3) is two triangles split along q0-q2, or
 // q1-q3 when the face's bit is set: the same split as the neighbour's, so the
 // traversal is watertight on non-planar faces. The exit is the nearest
@@ -23,6 +26,8 @@
 //PPIRay::HexahedronField::Impl
 
 //PPIRay::PyramidField::Impl
+
+//PPIRay::QuadraticField::Impl
 
 // The cell last loaded (loadCell): a handle, and its data in globals, which
 // the shader compiler keeps in registers (a struct holding an array, copied
@@ -36,6 +41,7 @@ vec3 cellP[8];
 int cellMask; // bit f: face f split along its second diagonal
 vec4 cellC;   // c0..c3
 vec4 cellD;   // c4..c7
+vec3 cellE;   // c8..c10 (QUADRATIC_FIELD)
 
 // Loop iterations of a cell step spent here: the two searches over 6 faces x
 // 2 triangles, the corners, the cubic's extrema and monotonic pieces, and a
@@ -64,6 +70,7 @@ void loadCellData(int h)
   cellKindLoaded = n.w;
   cellC = hexCoefficientsTexel(FIELD_TEXELS * h);
   cellD = hexCoefficientsTexel(FIELD_TEXELS * h + 1);
+  cellE = QUADRATIC_FIELD ? hexCoefficientsTexel(FIELD_TEXELS * h + 2).xyz : vec3(0.0);
 }
 
 Cell loadCell(int h)
@@ -288,13 +295,21 @@ bool cellFrame(Cell cell, out mat3 toFrame)
   return abs(det) > 1.0e-6 * scale;
 }
 
+// Whether the loaded cell's field has second-order terms in its frame (a
+// wedge's products, a quadratic tetrahedron's): not a linear tetrahedron.
+bool nonlinearField(Cell cell)
+{
+  return cellKind(cell) != 3 ||
+    (QUADRATIC_FIELD && (any(notEqual(cellD.xyz, vec3(0.0))) || any(notEqual(cellE, vec3(0.0)))));
+}
+
 // The field on the stretch past `entry` (len long): in the cell frame a
 // polynomial in x expanded at the entry point (trilinear: a cubic; a
-// tetrahedron's: linear), none where the frame is singular; a pyramid's by
-// pyramidStretch.
+// quadratic tetrahedron's: a quadratic; a linear one's: linear), none where
+// the frame is singular; a pyramid's by pyramidStretch.
 bool fieldAlongRay(Cell cell, vec3 entry, vec3 exit, float len, vec3 direction, out Stretch s)
 {
-  s.degree = cellKind(cell) == 3 ? 1 : 3;
+  s.degree = nonlinearField(cell) ? 3 : 1;
   if (PYRAMID_CELLS && cellKind(cell) == 2)
   {
     s.w = pyramidStretch(cellP, cellC, cellD.x, entry, direction, len, s.sEnd);
@@ -302,7 +317,8 @@ bool fieldAlongRay(Cell cell, vec3 entry, vec3 exit, float len, vec3 direction, 
   }
   mat3 toFrame;
   bool regular = cellFrame(cell, toFrame);
-  s.w = rayCubic(cellC, cellD, toFrame * (entry - cellP[0]), toFrame * direction);
+  vec3 q = toFrame * (entry - cellP[0]), r = toFrame * direction;
+  s.w = rayCubic(cellC, cellD, q, r) + (QUADRATIC_FIELD ? raySquares(cellE, q, r) : vec4(0.0));
   s.sEnd = cubicValue(s.w, len);
   return regular;
 }
@@ -323,7 +339,9 @@ vec3 fieldGradient(Cell cell, vec3 x)
   }
   mat3 toFrame;
   cellFrame(cell, toFrame);
-  return transpose(toFrame) * trilinearGradient(cellC, cellD, toFrame * (x - cellP[0]));
+  vec3 p = toFrame * (x - cellP[0]);
+  return transpose(toFrame) *
+    (trilinearGradient(cellC, cellD, p) + (QUADRATIC_FIELD ? squaresGradient(cellE, p) : vec3(0.0)));
 }
 
 // How far x, on face e of cell h, lies outside that face: outside the

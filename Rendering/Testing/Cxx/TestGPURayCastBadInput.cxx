@@ -239,8 +239,9 @@ int TestGPURayCastBadInput(int argc, char* argv[])
                      ppiray_test::Compare(reference.Image, m.Image).Max == 0,
     "tetrahedra and a triangle: error, tetrahedra render unchanged");
 
-  // The same tetrahedra as quadratic tetrahedra (mid-edge points unused):
-  // warning, rendered through their corners, image unchanged.
+  // The same tetrahedra as quadratic tetrahedra with their mid-edge nodes on
+  // the corners (a map that folds, ppirayQuadraticTetrahedra.h): warning,
+  // rendered through their corners, image unchanged.
   vtkNew<vtkUnstructuredGrid> quadratic;
   quadratic->SetPoints(good->GetPoints());
   quadratic->GetPointData()->ShallowCopy(good->GetPointData());

@@ -32,6 +32,7 @@
 //     from linear in every cell: within the suite's bound of VTK's
 //     interpolation.
 
+#include "PPIRayExpectNative.h"
 #include "PPIRayImageCompare.h"
 #include "PPIRayMixedBlock.h"
 #include "PPIRayPixelCheck.h"
@@ -89,39 +90,6 @@ int Fail(const char* what)
   return 1;
 }
 
-// Renders `grid` in `mode` and checks it against the reference: covered
-// pixels, no NaN, p99 and max within the bounds; one peel, every cell native
-// (unless split).
-int Expect(const char* what, ppiray_test::Scene& scene, vtkUnstructuredGridGPURayCastMapper* mapper,
-  vtkUnstructuredGrid* grid, int mode, double p99Bound, double maxBound,
-  ppiray_test::PixelCheck* out = nullptr, const char* cellArray = nullptr)
-{
-  mapper->SetHexahedronMode(mode);
-  mapper->SetInputData(grid);
-  scene.Window->Render();
-  const auto image = ppiray_test::ReadRGB(scene.Window);
-  const auto check =
-    ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property, image, Size, Size, cellArray);
-  std::cout << what << ": native cells " << mapper->GetStatistics()->GetNumberOfNativeCells()
-            << ", peels " << mapper->GetStatistics()->GetNumberOfPeels() << ", ";
-  int errors = ppiray_test::ExpectCoverage(check, 10000);
-  const bool split = mode == vtkUnstructuredGridGPURayCastMapper::HEXAHEDRON_SUBDIVIDE;
-  if (mapper->GetStatistics()->GetNumberOfPeels() != 1 ||
-      mapper->GetStatistics()->GetNumberOfNativeCells() != (split ? 0 : grid->GetNumberOfCells()))
-  {
-    errors += Fail("not one peel, or not every cell native");
-  }
-  if (check.P99 > p99Bound || check.MaxDifference > maxBound)
-  {
-    std::cerr << "bounds: p99 " << p99Bound << ", max " << maxBound << "\n";
-    errors += Fail(what);
-  }
-  if (out)
-  {
-    *out = check;
-  }
-  return errors;
-}
 }
 
 int TestGPURayCastMixedNative(int, char*[])
@@ -161,10 +129,10 @@ int TestGPURayCastMixedNative(int, char*[])
 
   // 2, 3. Undistorted: native against split.
   ppiray_test::PixelCheck native, split;
-  errors += Expect("undistorted, ACCURATE", scene, mapper, straight.Grid,
-    Mapper::HEXAHEDRON_ACCURATE, 1.0, 1.0, &native);
-  errors += Expect("undistorted, split into tetrahedra", scene, mapper, straight.Grid,
-    Mapper::HEXAHEDRON_SUBDIVIDE, 255.0, 255.0, &split);
+  errors += ppiray_test::ExpectNative("undistorted, ACCURATE", scene, mapper, straight.Grid,
+    Mapper::HEXAHEDRON_ACCURATE, Size, 1.0, 1.0, &native);
+  errors += ppiray_test::ExpectNative("undistorted, split into tetrahedra", scene, mapper,
+    straight.Grid, Mapper::HEXAHEDRON_SUBDIVIDE, Size, 255.0, 255.0, &split);
   if (!(split.P99 > native.P99 && split.MaxDifference > native.MaxDifference))
   {
     errors += Fail("the split is not further from VTK's field than the native march");
@@ -202,12 +170,12 @@ int TestGPURayCastMixedNative(int, char*[])
 
   // 4. Distorted: measured p99 3.3, max 5.9 (split 3.6, 5.9); bounds with a
   // fifth to spare, below a 10/255 change.
-  errors += Expect(
-    "distorted, ACCURATE", scene, mapper, distorted.Grid, Mapper::HEXAHEDRON_ACCURATE, 4.0, 7.0);
+  errors += ppiray_test::ExpectNative("distorted, ACCURATE", scene, mapper, distorted.Grid,
+    Mapper::HEXAHEDRON_ACCURATE, Size, 4.0, 7.0);
 
   // 5. FAST (measured p99 1.6, max 3.3: twice that), and cell data.
-  errors +=
-    Expect("undistorted, FAST", scene, mapper, straight.Grid, Mapper::HEXAHEDRON_FAST, 3.0, 6.0);
+  errors += ppiray_test::ExpectNative(
+    "undistorted, FAST", scene, mapper, straight.Grid, Mapper::HEXAHEDRON_FAST, Size, 3.0, 6.0);
   vtkNew<vtkDoubleArray> cellValues;
   cellValues->SetName("cellBlob");
   for (vtkIdType c = 0; c < straight.Grid->GetNumberOfCells(); ++c)
@@ -219,8 +187,8 @@ int TestGPURayCastMixedNative(int, char*[])
   distorted.Grid->GetCellData()->AddArray(cellValues);
   mapper->SelectScalarArray("cellBlob");
   mapper->SetScalarModeToUseCellFieldData();
-  errors += Expect("undistorted, cell data", scene, mapper, straight.Grid,
-    Mapper::HEXAHEDRON_ACCURATE, 1.0, 1.0, nullptr, "cellBlob");
+  errors += ppiray_test::ExpectNative("undistorted, cell data", scene, mapper, straight.Grid,
+    Mapper::HEXAHEDRON_ACCURATE, Size, 1.0, 1.0, nullptr, "cellBlob");
   std::vector<unsigned char> images[2];
   const int modes[2] = { Mapper::HEXAHEDRON_ACCURATE, Mapper::HEXAHEDRON_SUBDIVIDE };
   for (int i = 0; i < 2; ++i)
@@ -247,8 +215,8 @@ int TestGPURayCastMixedNative(int, char*[])
     // more than the suite's bound for its max (taken linear between the
     // ends instead: p99 8.4, max 31.6).
     const double maxBound = type == VTK_PYRAMID || type == VTK_TETRA ? 1.5 : 1.0;
-    errors +=
-      Expect(what.c_str(), scene, mapper, layer, Mapper::HEXAHEDRON_ACCURATE, 1.0, maxBound);
+    errors += ppiray_test::ExpectNative(
+      what.c_str(), scene, mapper, layer, Mapper::HEXAHEDRON_ACCURATE, Size, 1.0, maxBound);
   }
   std::cout << "distorted, cell data: native against split p99 " << same.P99 << ", max " << same.Max
             << "\n";
