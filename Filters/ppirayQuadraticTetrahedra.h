@@ -42,7 +42,8 @@ PPIRAYFILTERS_EXPORT int EdgeBetween(int a, int b);
  * Mid-edge node ids after the corners are renumbered, corner i becoming the
  * old corner `corner[i]`: out[k] = in[EdgeBetween(corner[Edge[k][0]], corner[Edge[k][1]])].
  */
-PPIRAYFILTERS_EXPORT void RenumberEdgeNodes(const int corner[4], const vtkIdType in[6], vtkIdType out[6]);
+PPIRAYFILTERS_EXPORT void RenumberEdgeNodes(
+  const int corner[4], const vtkIdType in[6], vtkIdType out[6]);
 
 /**
  * c[0..10] of the field with corner values s[0..3] and mid-edge values m[0..5]:

@@ -2,6 +2,7 @@
 
 #include "ppirayCellAdjacency.h"
 #include "ppirayConformingTetrahedra.h"
+#include "ppirayCurvedTetrahedra.h"
 #include "ppirayHiddenCells.h"
 #include "ppirayInvertedSheets.h"
 #include "ppirayLinearCellKinds.h"
@@ -170,13 +171,14 @@ void CellCoefficients(
 // corner values s and the values at its mid-edge nodes `mids`: c0..c7 into
 // out[0..7], c8..c10 into out[8..10]. False, and out left linear, when a
 // mid-edge value is NaN (the cell through its corners).
+template<typename PointValues>
 bool QuadraticCoefficients(
-  vtkDataArray* scalars, int component, const vtkIdType mids[6], const double s[8], float out[12])
+  const PointValues& values, const vtkIdType mids[6], const double s[8], float out[12])
 {
   double m[6], c[ppiray::quadratic_tetrahedron::Coefficients];
   for (int k = 0; k < 6; ++k)
   {
-    m[k] = scalars->GetComponent(mids[k], component);
+    m[k] = values(mids[k]);
     if (std::isnan(m[k]))
     {
       return false;
@@ -228,6 +230,8 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   }
   this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
   this->DropFlatCells();
+  this->MeasureCurvedEdges();
+  this->RefineCurvedCells();
   if (this->GetNumberOfHexahedra() == 0)
   {
     return false;
@@ -235,13 +239,12 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   laps.End("cells");
   this->Hidden = ppiray::HiddenCells(grid, this->CellIds);
   this->OrientCells();
-  this->MeasureCurvedEdges();
   this->StoreCorners();
   laps.End("corners");
   std::vector<vtkIdType> boundary = this->MatchFaces();
   laps.End(this->Adjacency.WasKept() ? "folds" : "adjacency");
   this->LinkSplitQuadrilaterals(boundary);
-  this->ExtractBoundary(boundary, grid->GetNumberOfPoints());
+  this->ExtractBoundary(boundary, static_cast<vtkIdType>(this->LocalPoints.size() / 3));
   laps.End("boundary");
   // Faces with reflex edges: the faces across them, for the march to enter
   // again where it leaves next to one (boundary triangle codes 12 h + 2 f + t).
@@ -284,6 +287,11 @@ void vtkHexahedralCellTextures::Clear()
   this->NumberOfQuadraticCells = 0;
   this->NumberOfCurvedCells = 0;
   this->MaximumMidEdgeDeviation = 0;
+  this->RefinementLevels = 0;
+  this->Refinement = ppiray::RefinedTetrahedra();
+  this->RefinedNodes.clear();
+  this->PieceCell.clear();
+  this->PieceCorners.clear();
 }
 
 //------------------------------------------------------------------------------
@@ -388,6 +396,120 @@ void vtkHexahedralCellTextures::MeasureCurvedEdges()
 }
 
 //------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::RefineCurvedCells()
+{
+  // Every quadratic tetrahedron refined by the same levels (its pieces
+  // conform across faces), when some are curved (ppirayCurvedTetrahedra.h).
+  this->NumberOfGridPoints = static_cast<vtkIdType>(this->LocalPoints.size() / 3);
+  std::vector<std::array<vtkIdType, 10>> cells;
+  std::vector<vtkIdType> index;
+  const vtkIdType count = this->GetNumberOfHexahedra();
+  for (vtkIdType h = 0; h<count&& this->NumberOfCurvedCells> 0; ++h)
+  {
+    if (this->HasEdgeNodes(h))
+    {
+      const vtkIdType* c = this->CornerIds.data() + 8 * h;
+      const vtkIdType* m = this->EdgeNodeIds.data() + 6 * h;
+      cells.push_back({ c[0], c[1], c[2], c[3], m[0], m[1], m[2], m[3], m[4], m[5] });
+      index.push_back(h);
+    }
+  }
+  this->RefinementLevels = ppiray::RefinementLevels(this->MaximumMidEdgeDeviation,
+    CurvedEdgeTolerance(), static_cast<vtkIdType>(cells.size()), 3,
+    std::max(8 * static_cast<vtkIdType>(cells.size()), MaximumRefinedPieces()));
+  if (this->RefinementLevels == 0)
+  {
+    return;
+  }
+  ppiray::RefineQuadraticTetrahedra(this->LocalPoints.data(), this->NumberOfGridPoints, cells,
+    this->RefinementLevels, this->Refinement);
+  const auto& added = this->Refinement.Added.Points;
+  this->LocalPoints.insert(this->LocalPoints.end(), added.begin(), added.end());
+  // The cells kept in place, the pieces after them.
+  vtkIdType kept = 0;
+  for (vtkIdType h = 0; h < count; ++h)
+  {
+    if (!this->HasEdgeNodes(h))
+    {
+      std::copy_n(this->CornerIds.data() + 8 * h, 8, this->CornerIds.data() + 8 * kept);
+      std::copy_n(this->EdgeNodeIds.data() + 6 * h, 6, this->EdgeNodeIds.data() + 6 * kept);
+      this->CellIds[kept] = this->CellIds[h];
+      this->Kinds[kept++] = this->Kinds[h];
+    }
+  }
+  const std::vector<vtkIdType> cellIds(this->CellIds);
+  for (const auto& nodes : cells)
+  {
+    this->RefinedNodes.insert(this->RefinedNodes.end(), nodes.begin(), nodes.end());
+  }
+  this->PieceCell.assign(kept, -1);
+  this->PieceCell.insert(
+    this->PieceCell.end(), this->Refinement.Cell.begin(), this->Refinement.Cell.end());
+  this->PieceCorners.assign(kept, ppiray::PieceCorners());
+  this->PieceCorners.insert(
+    this->PieceCorners.end(), this->Refinement.Corners.begin(), this->Refinement.Corners.end());
+  this->CellIds.resize(kept);
+  this->Kinds.resize(kept);
+  this->CornerIds.resize(8 * kept);
+  this->EdgeNodeIds.resize(6 * kept);
+  for (size_t p = 0; p < this->Refinement.Pieces.size(); ++p)
+  {
+    const auto& nodes = this->Refinement.Pieces[p];
+    this->CellIds.push_back(cellIds[index[this->Refinement.Cell[p]]]);
+    this->Kinds.push_back(ppiray::TETRAHEDRON_KIND);
+    for (int i = 0; i < 8; ++i)
+    {
+      this->CornerIds.push_back(nodes[i < 4 ? i : 0]);
+    }
+    this->EdgeNodeIds.insert(this->EdgeNodeIds.end(), nodes.begin() + 4, nodes.end());
+  }
+  this->NumberOfCellsOfKind[ppiray::TETRAHEDRON_KIND] +=
+    static_cast<vtkIdType>(this->Refinement.Pieces.size() - cells.size());
+}
+
+//------------------------------------------------------------------------------
+std::vector<unsigned char> vtkHexahedralCellTextures::RefinedThroughCorners(
+  vtkDataArray* scalars, int component) const
+{
+  // A refined cell is taken through its corners, as an unrefined one is,
+  // when its corners are finite and a mid-edge value is NaN.
+  const vtkIdType cells = static_cast<vtkIdType>(this->RefinedNodes.size() / 10);
+  std::vector<unsigned char> linear(cells, 0);
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    bool corners = true, mids = true;
+    for (int i = 0; i < 10; ++i)
+    {
+      const bool finite =
+        !std::isnan(scalars->GetComponent(this->RefinedNodes[10 * c + i], component));
+      (i < 4 ? corners : mids) = (i < 4 ? corners : mids) && finite;
+    }
+    linear[c] = corners && !mids ? 1 : 0;
+  }
+  return linear;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHexahedralCellTextures::PieceThroughCorners(vtkIdType h,
+  const std::vector<unsigned char>& linear, vtkDataArray* scalars, int component, double s[8]) const
+{
+  const vtkIdType cell = this->PieceCell.empty() ? -1 : this->PieceCell[h];
+  if (cell < 0 || !linear[cell])
+  {
+    return false;
+  }
+  double corners[4], values[4];
+  for (int i = 0; i < 4; ++i)
+  {
+    corners[i] = scalars->GetComponent(this->RefinedNodes[10 * cell + i], component);
+  }
+  ppiray::LinearCornerValues(this->PieceCorners[h], this->Refinement.Resolution, corners, values);
+  std::copy_n(values, 4, s);
+  std::fill(s + 4, s + 8, values[0]);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkHexahedralCellTextures::DropFlatCells()
 {
   // Zero-volume cells (a layer pinched out to nothing: top face on the bottom
@@ -454,6 +576,14 @@ void vtkHexahedralCellTextures::OrientCells()
         vtkIdType renumbered[6];
         ppiray::quadratic_tetrahedron::RenumberEdgeNodes(mirror, mids, renumbered);
         std::copy_n(renumbered, 6, mids);
+        if (!this->PieceCorners.empty())
+        {
+          const ppiray::PieceCorners corners = this->PieceCorners[h];
+          for (int i = 0; i < 4; ++i)
+          {
+            this->PieceCorners[h][i] = corners[mirror[i]];
+          }
+        }
       }
       ++mirroredCells;
     }
@@ -709,6 +839,21 @@ bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScala
   {
     return false;
   }
+  // The refinement's added points: VTK's field of their cell, or through
+  // its corners where that is NaN (ppirayCurvedTetrahedra.h).
+  const vtkIdType added = this->Refinement.Added.GetNumberOfPoints();
+  std::vector<double> addedValues(added);
+#pragma omp parallel for schedule(static)
+  for (vtkIdType i = 0; i < added; ++i)
+  {
+    const double v = this->Refinement.Added.Value(i, scalars, component);
+    addedValues[i] = std::isnan(v) ? this->Refinement.Linear.Value(i, scalars, component) : v;
+  }
+  const vtkIdType gridPoints = this->NumberOfGridPoints;
+  const auto value = [&](vtkIdType id)
+  { return id < gridPoints ? scalars->GetComponent(id, component) : addedValues[id - gridPoints]; };
+  const std::vector<unsigned char> linear =
+    cellScalars ? std::vector<unsigned char>() : this->RefinedThroughCorners(scalars, component);
   vtkIdType nanCells = 0, linearized = 0;
 #pragma omp parallel for schedule(static) reduction(+ : nanCells, linearized)
   for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
@@ -726,10 +871,13 @@ bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScala
     {
       for (int i = 0; i < 8; ++i)
       {
-        s[i] = scalars->GetComponent(this->CornerIds[8 * h + i], component);
+        s[i] = value(this->CornerIds[8 * h + i]);
         hasNaN = hasNaN || std::isnan(s[i]);
       }
     }
+    const bool throughCorners =
+      !cellScalars && this->PieceThroughCorners(h, linear, scalars, component, s);
+    hasNaN = hasNaN && !throughCorners;
     if (hasNaN || (h < static_cast<vtkIdType>(this->Hidden.size()) && this->Hidden[h]))
     {
       out[0] = TransparentCellOffset();
@@ -738,14 +886,14 @@ bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScala
     }
     CellCoefficients(
       this->Kinds[h], this->LocalPoints.data(), this->CornerIds.data() + 8 * h, s, out);
-    if (!cellScalars && this->HasEdgeNodes(h))
+    if (!cellScalars && !throughCorners && this->HasEdgeNodes(h))
     {
-      linearized +=
-        QuadraticCoefficients(scalars, component, this->EdgeNodeIds.data() + 6 * h, s, out) ? 0 : 1;
+      linearized += QuadraticCoefficients(value, this->EdgeNodeIds.data() + 6 * h, s, out) ? 0 : 1;
     }
   }
   this->NumberOfNaNScalars = nanCells;
-  this->NumberOfLinearizedCells = linearized;
+  this->NumberOfLinearizedCells =
+    linearized + std::count(linear.begin(), linear.end(), static_cast<unsigned char>(1));
   this->Modified();
   return true;
 }

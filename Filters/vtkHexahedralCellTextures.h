@@ -46,9 +46,10 @@
 #ifndef vtkHexahedralCellTextures_h
 #define vtkHexahedralCellTextures_h
 
-#include "ppirayCellAdjacency.h" // for ppiray::CellAdjacencyCache
-#include "ppirayFiltersModule.h" // for export macro
-#include "ppirayStageTimes.h"    // for ppiray::StageTimes
+#include "ppirayCellAdjacency.h"    // for ppiray::CellAdjacencyCache
+#include "ppirayCurvedTetrahedra.h" // for ppiray::RefinedTetrahedra
+#include "ppirayFiltersModule.h"    // for export macro
+#include "ppirayStageTimes.h"       // for ppiray::StageTimes
 #include "vtkObject.h"
 
 #include <vector> // for std::vector
@@ -175,13 +176,21 @@ public:
   bool HasQuadraticField() const { return !this->EdgeNodeIds.empty(); }
   /**
    * Quadratic tetrahedra with a mid-edge node more than CurvedEdgeTolerance()
-   * of its edge's length from the edge's midpoint: rendered in the straight
-   * tetrahedron of their corners with their field in VTK's parametric
-   * coordinates (a geometric error of about that deviation).
+   * of its edge's length from the edge's midpoint (GetRefinementLevels()).
    */
   vtkGetMacro(NumberOfCurvedCells, vtkIdType);
   vtkGetMacro(MaximumMidEdgeDeviation, double);
-  static constexpr double CurvedEdgeTolerance() { return 1e-4; }
+  static constexpr double CurvedEdgeTolerance() { return 4e-3; }
+  /**
+   * Levels every quadratic tetrahedron is refined by when some are curved
+   * (ppirayCurvedTetrahedra.h): the fewest that bring the largest mid-edge
+   * offset below CurvedEdgeTolerance() of an edge (it shrinks fourfold per
+   * level), at most 3, and at most MaximumRefinedPieces() pieces in all or
+   * one level (8 pieces a cell, as many as vtkDataSetTriangleFilter's linear
+   * tetrahedra) if that is more. The pieces are rendered with straight edges.
+   */
+  vtkGetMacro(RefinementLevels, int);
+  static constexpr vtkIdType MaximumRefinedPieces() { return vtkIdType(1) << 20; }
   /**
    * Quadratic tetrahedra with a NaN at a mid-edge node (not at a corner):
    * rendered linear, through their corners.
@@ -226,6 +235,12 @@ protected:
   void DropFlatCells();
   void OrientCells();
   void MeasureCurvedEdges();
+  void RefineCurvedCells();
+  // Per refined cell: taken through its corners (a NaN mid-edge value).
+  std::vector<unsigned char> RefinedThroughCorners(vtkDataArray* scalars, int component) const;
+  // Corner values s of piece h when its cell is taken through its corners.
+  bool PieceThroughCorners(vtkIdType h, const std::vector<unsigned char>& linear,
+    vtkDataArray* scalars, int component, double s[8]) const;
   void StoreCorners();
   ppiray::CellFaceMesh FaceMesh() const; // the cells for ppiray::MatchCellFaces
   std::vector<vtkIdType> MatchFaces();   // the boundary faces, 6 h + f
@@ -262,6 +277,12 @@ protected:
   vtkIdType NumberOfCurvedCells = 0;
   double MaximumMidEdgeDeviation = 0;
   vtkIdType NumberOfLinearizedCells = 0;
+  int RefinementLevels = 0;
+  vtkIdType NumberOfGridPoints = 0;
+  ppiray::RefinedTetrahedra Refinement;           // of curved quadratic tetrahedra
+  std::vector<vtkIdType> RefinedNodes;            // 10 per refined cell
+  std::vector<vtkIdType> PieceCell;               // per cell: its refined cell (-1: not a piece)
+  std::vector<ppiray::PieceCorners> PieceCorners; // per cell, renumbered with its corners
 
 private:
   ppiray::StageTimes Stages; // of the last BuildGeometry()

@@ -16,6 +16,7 @@
 #include "ppirayLinearCellKinds.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 //------------------------------------------------------------------------------
@@ -160,12 +161,14 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
   }
   if (hexes.GetNumberOfCurvedCells() > 0)
   {
-    vtkWarningWithObjectMacro(reporter,
-      << hexes.GetNumberOfCurvedCells()
-      << " quadratic tetrahedra have curved edges (a mid-edge node up to "
-      << hexes.GetMaximumMidEdgeDeviation()
-      << " of its edge's length off the midpoint): rendered with the straight edges of their "
-         "corners.");
+    const int levels = hexes.GetRefinementLevels();
+    vtkWarningWithObjectMacro(
+      reporter, << hexes.GetNumberOfCurvedCells()
+                << " quadratic tetrahedra have curved edges (a mid-edge node up to "
+                << hexes.GetMaximumMidEdgeDeviation() << " of its edge's length off the midpoint): "
+                << (levels > 0 ? "every quadratic tetrahedron refined " : "") << levels
+                << " levels, rendered with straight edges within "
+                << hexes.GetMaximumMidEdgeDeviation() / std::pow(4.0, levels) << " of an edge.");
   }
   if (hexes.GetNumberOfNonManifoldFaces() > 0)
   {

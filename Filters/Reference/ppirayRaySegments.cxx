@@ -137,25 +137,109 @@ void FaceCrossings(
   }
 }
 
-// FaceCrossings of a nonlinear face (a quadratic or higher-order triangle or
-// quadrilateral) through the triangles vtkCell::Triangulate makes of its
-// nodes; `centre` is subtracted from its points as from the ray's origin.
+// Where the ray o + t d meets the curved face X(r, s) = sum_i N_i(r, s) X_i
+// (a quadratic or higher-order triangle or quadrilateral): Newton's method
+// on X(r, s) - centre - (o + t d) = 0 in (r, s, t), with the face's own
+// functions (InterpolateFunctions, InterpolateDerivs), from (r, s) = `seed`
+// and t where the ray passes nearest X(seed). False where it does not
+// converge, or converges outside the face's parametric domain (a triangle's
+// or the unit square).
+bool CurvedFaceCrossing(vtkCell* face, const Vec3& centre, const Vec3& o, const Vec3& d,
+  const double seed[2], std::vector<double>& weights, std::vector<double>& derivs, double& t)
+{
+  const int n = static_cast<int>(face->GetNumberOfPoints());
+  const bool triangle = face->GetNumberOfEdges() == 3;
+  double pcoords[3] = { seed[0], seed[1], 0.0 };
+  t = std::numeric_limits<double>::quiet_NaN();
+  for (int iteration = 0; iteration < 16; ++iteration)
+  {
+    face->InterpolateFunctions(pcoords, weights.data());
+    face->InterpolateDerivs(pcoords, derivs.data());
+    Vec3 x(0.0), dr(0.0), ds(0.0);
+    for (int i = 0; i < n; ++i)
+    {
+      double p[3];
+      face->GetPoints()->GetPoint(i, p);
+      const Vec3 point(p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]);
+      x += weights[i] * point;
+      dr += derivs[i] * point;
+      ds += derivs[n + i] * point;
+    }
+    t = std::isnan(t) ? glm::dot(x - o, d) / glm::dot(d, d) : t;
+    const glm::dmat3 jacobian(dr, ds, -d);
+    if (!(std::abs(glm::determinant(jacobian)) > 0))
+    {
+      return false;
+    }
+    const Vec3 step = glm::inverse(jacobian) * (x - o - t * d);
+    pcoords[0] -= step[0];
+    pcoords[1] -= step[1];
+    t -= step[2];
+    if (!(std::abs(pcoords[0]) < 4 && std::abs(pcoords[1]) < 4))
+    {
+      return false; // diverging: the ray misses the face near this seed
+    }
+    if (!(std::max({ std::abs(step[0]), std::abs(step[1]), std::abs(step[2]) }) > 1e-13))
+    {
+      const double eps = 1e-9, r = pcoords[0], s = pcoords[1];
+      return triangle ? r >= -eps && s >= -eps && r + s <= 1 + eps
+                      : r >= -eps && s >= -eps && r <= 1 + eps && s <= 1 + eps;
+    }
+  }
+  return false;
+}
+
+// FaceCrossings of a nonlinear face: CurvedFaceCrossing from seeds spread
+// over the face (a triangle's corners and the centroids of its four
+// midpoint triangles; a quadrilateral's centre and quarter points), each
+// crossing once; `centre` is subtracted from its points as from the ray's
+// origin.
 void NonlinearFaceCrossings(
   vtkCell* face, const Vec3& centre, const Vec3& o, const Vec3& d, std::vector<double>& ts)
 {
-  vtkNew<vtkIdList> ids;
-  vtkNew<vtkPoints> points;
-  face->Triangulate(0, ids, points);
-  std::vector<Vec3> triangle(3);
-  for (vtkIdType t = 0; t + 2 < points->GetNumberOfPoints(); t += 3)
+  static const double triangleSeeds[7][2] = { { 0, 0 }, { 1, 0 }, { 0, 1 }, { 1 / 6.0, 1 / 6.0 },
+    { 4 / 6.0, 1 / 6.0 }, { 1 / 6.0, 4 / 6.0 }, { 1 / 3.0, 1 / 3.0 } };
+  static const double quadSeeds[5][2] = { { 0.25, 0.25 }, { 0.75, 0.25 }, { 0.25, 0.75 },
+    { 0.75, 0.75 }, { 0.5, 0.5 } };
+  const bool triangle = face->GetNumberOfEdges() == 3;
+  const int seeds = triangle ? 7 : 5;
+  const int n = static_cast<int>(face->GetNumberOfPoints());
+  // None where the ray passes outside the ball around the nodes' centroid
+  // through the farthest node, doubled (the face bulges past its nodes by
+  // far less).
+  Vec3 mean(0.0);
+  std::vector<Vec3> nodes(n);
+  for (int i = 0; i < n; ++i)
   {
-    for (int k = 0; k < 3; ++k)
+    double p[3];
+    face->GetPoints()->GetPoint(i, p);
+    nodes[i] = Vec3(p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]);
+    mean += nodes[i] / static_cast<double>(n);
+  }
+  double radius2 = 0;
+  for (const Vec3& x : nodes)
+  {
+    radius2 = std::max(radius2, glm::dot(x - mean, x - mean));
+  }
+  const Vec3 toMean = mean - o;
+  const double along = glm::dot(toMean, d) / glm::dot(d, d);
+  const Vec3 off = toMean - along * d;
+  if (glm::dot(off, off) > 4.0 * radius2)
+  {
+    return;
+  }
+  std::vector<double> weights(n), derivs(3 * n);
+  const size_t before = ts.size();
+  for (int k = 0; k < seeds; ++k)
+  {
+    double t;
+    if (CurvedFaceCrossing(
+          face, centre, o, d, triangle ? triangleSeeds[k] : quadSeeds[k], weights, derivs, t) &&
+        std::none_of(ts.begin() + before, ts.end(),
+          [t](double u) { return std::abs(u - t) <= 1e-9 * std::max(1.0, std::abs(t)); }))
     {
-      double x[3];
-      points->GetPoint(t + k, x);
-      triangle[k] = { x[0] - centre[0], x[1] - centre[1], x[2] - centre[2] };
+      ts.push_back(t);
     }
-    FaceCrossings(triangle, o, d, ts);
   }
 }
 }
@@ -245,8 +329,8 @@ int InterpolatedPoints(vtkCell* cell)
 }
 
 //------------------------------------------------------------------------------
-void RefineParametricCoordinates(
-  vtkCell* cell, const double x[3], double pcoords[3], double* weights, std::vector<double>& derivs)
+void RefineParametricCoordinates(vtkCell* cell, const std::vector<Vec3>& nodes, const double x[3],
+  double pcoords[3], double* weights, std::vector<double>& derivs)
 {
   // Newton's method on x(p) = sum_i N_i(p) X_i - x = 0 from the p given,
   // with the cell's own N_i and dN_i/dp (InterpolateFunctions,
@@ -261,13 +345,10 @@ void RefineParametricCoordinates(
     Vec3 residual(-x[0], -x[1], -x[2]);
     for (int i = 0; i < n; ++i)
     {
-      double p[3];
-      cell->GetPoints()->GetPoint(i, p);
-      const Vec3 point(p[0], p[1], p[2]);
-      residual += weights[i] * point;
+      residual += weights[i] * nodes[i];
       for (int k = 0; k < 3; ++k)
       {
-        jacobian[k] += derivs[k * n + i] * point;
+        jacobian[k] += derivs[k * n + i] * nodes[i];
       }
     }
     if (!(std::abs(glm::determinant(jacobian)) > 0))
@@ -388,6 +469,13 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
   const bool nonlinear = !polyhedron && !cell->IsLinear();
   std::vector<double> derivs;
   double midpoint[3] = { 0, 0, 0 }; // pcoords of the last inside test's point
+  std::vector<Vec3> nodes(nonlinear ? cell->GetNumberOfPoints() : 0);
+  for (size_t i = 0; i < nodes.size(); ++i)
+  {
+    double p[3];
+    cell->GetPoints()->GetPoint(static_cast<vtkIdType>(i), p);
+    nodes[i] = Vec3(p[0], p[1], p[2]);
+  }
   auto evaluate = [&](double t, double& s, bool insideTest)
   {
     double x[3], pcoords[3], dist2;
@@ -409,14 +497,14 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
     {
       // Inside an interval whose midpoint was found: Newton from there.
       std::copy_n(midpoint, 3, pcoords);
-      RefineParametricCoordinates(cell, x, pcoords, weights.data(), derivs);
+      RefineParametricCoordinates(cell, nodes, x, pcoords, weights.data(), derivs);
     }
     else
     {
       found = cell->EvaluatePosition(x, nullptr, subId, pcoords, dist2, weights.data());
       if (nonlinear && found != -1)
       {
-        RefineParametricCoordinates(cell, x, pcoords, weights.data(), derivs);
+        RefineParametricCoordinates(cell, nodes, x, pcoords, weights.data(), derivs);
         std::copy_n(pcoords, 3, midpoint);
       }
     }

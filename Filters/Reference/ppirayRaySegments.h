@@ -64,10 +64,11 @@ bool ClipRay(const Tetrahedron& tet, const Vec3& origin, const Vec3& direction, 
 // VTK_HEXAHEDRON); the type's own functions use the first ones.
 int InterpolatedPoints(vtkCell* cell);
 
-// pcoords of x in `cell` refined from EvaluatePosition's by Newton's method
-// on the cell's own functions, and the interpolation weights there.
-void RefineParametricCoordinates(vtkCell* cell, const double x[3], double pcoords[3],
-  double* weights, std::vector<double>& derivs);
+// pcoords of x in `cell` (its points `nodes`) refined from the pcoords given
+// by Newton's method on the cell's own functions, and the interpolation
+// weights there.
+void RefineParametricCoordinates(vtkCell* cell, const std::vector<glm::dvec3>& nodes,
+  const double x[3], double pcoords[3], double* weights, std::vector<double>& derivs);
 
 // The linear type of a quadratic or higher-order cell's corners (its first
 // `corners` points; 0 and 0 for other cells).

@@ -15,9 +15,9 @@ namespace ppiray_test
 {
 // Renders `grid` in HexahedronMode `mode` in the scene's size x size window
 // and checks it against the reference: at least 10,000 covered pixels, no
-// NaN, p99 and max within the bounds; one peel, every cell native (none when
-// split). `cellArray`: cell scalars by that name; `out`, `image`: the check
-// and the image read back. Returns the number of failures.
+// NaN, p99 and max within the bounds; one peel, every cell native (or
+// refined into native pieces; none when split). `cellArray`: cell scalars by that name; `out`,
+// `image`: the check and the image read back. Returns the number of failures.
 inline int ExpectNative(const char* what, Scene& scene, vtkUnstructuredGridGPURayCastMapper* mapper,
   vtkUnstructuredGrid* grid, int mode, int size, double p99Bound, double maxBound,
   PixelCheck* out = nullptr, const char* cellArray = nullptr,
@@ -34,7 +34,8 @@ inline int ExpectNative(const char* what, Scene& scene, vtkUnstructuredGridGPURa
   int errors = ExpectCoverage(check, 10000);
   const bool split = mode == vtkUnstructuredGridGPURayCastMapper::HEXAHEDRON_SUBDIVIDE;
   if (statistics->GetNumberOfPeels() != 1 ||
-    statistics->GetNumberOfNativeCells() != (split ? 0 : grid->GetNumberOfCells()))
+      (split ? statistics->GetNumberOfNativeCells() != 0
+             : statistics->GetNumberOfNativeCells() < grid->GetNumberOfCells()))
   {
     std::cerr << "FAILED: not one peel, or not every cell native\n";
     ++errors;
