@@ -1,5 +1,6 @@
 #include "vtkPPIRayVolumeRepresentation.h"
 
+#include "ppirayQuadraticTetrahedra.h"
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkAppendFilter.h"
@@ -51,10 +52,10 @@ bool HasHiddenCells(vtkUnstructuredGrid* grid)
 }
 
 // Whether every cell of `data` is a hexahedron or a voxel (`mixed` false), or
-// one of the linear 3D cells the mapper renders itself: tetrahedra,
-// hexahedra, voxels, wedges and pyramids, split conformingly by the mapper
-// where it does not render them natively (`mixed` true). Tetrahedra alone
-// keep ParaView's usual path, unless some are hidden.
+// one of the 3D cells the mapper renders itself: tetrahedra (linear or
+// ten-node), hexahedra, voxels, wedges and pyramids, split conformingly by
+// the mapper where it does not render them natively (`mixed` true). Linear
+// tetrahedra alone keep ParaView's usual path, unless some are hidden.
 bool RenderedUnsplit(vtkDataSet* data, bool mixed)
 {
   if (vtkStructuredGrid::SafeDownCast(data) || vtkImageData::SafeDownCast(data) ||
@@ -73,7 +74,11 @@ bool RenderedUnsplit(vtkDataSet* data, bool mixed)
     const int type = grid->GetCellType(c);
     tetrahedraOnly = tetrahedraOnly && type == VTK_TETRA;
     const bool hexahedral = type == VTK_HEXAHEDRON || type == VTK_VOXEL;
-    const bool linear3D = type == VTK_TETRA || type == VTK_WEDGE || type == VTK_PYRAMID;
+    // Ten-node tetrahedra carry their quadratic field to the mapper
+    // (vtkDataSetTriangleFilter would split them into linear tetrahedra).
+    const bool linear3D =
+      type == VTK_TETRA || type == VTK_WEDGE || type == VTK_PYRAMID ||
+      ppiray::quadratic_tetrahedron::IsQuadraticTetrahedron(type, grid->GetCellSize(c));
     if (!hexahedral && !(mixed && linear3D))
     {
       return false;
@@ -270,11 +275,12 @@ int vtkPPIRayVolumeRepresentation::RequestData(
   // The cells reach the mapper as they are, in one process and on each rank
   // in parallel (the view then redistributes whole cells for ordered
   // compositing): hexahedra when the mapper renders them natively, and
-  // meshes of tetrahedra, hexahedra, wedges and pyramids in any mode (the
-  // mapper's conforming split, with shared diagonals, instead of
-  // vtkDataSetTriangleFilter's, which leaves zero-volume and non-manifold
-  // tetrahedra on real FE meshes and can take minutes on their non-planar
-  // faces).
+  // meshes of tetrahedra (linear or ten-node), hexahedra, wedges and
+  // pyramids in any mode (the mapper's conforming split, with shared
+  // diagonals, instead of vtkDataSetTriangleFilter's, which leaves
+  // zero-volume and non-manifold tetrahedra on real FE meshes and can take
+  // minutes on their non-planar faces, and splits ten-node tetrahedra into
+  // linear ones).
   this->PassesCellsUnsplit = false;
   vtkDataObject* input = inputVector[0]->GetNumberOfInformationObjects() == 1
                            ? vtkDataObject::GetData(inputVector[0], 0)

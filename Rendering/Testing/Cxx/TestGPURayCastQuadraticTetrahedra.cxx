@@ -13,7 +13,7 @@
 //  3. the same cells as VTK_LAGRANGE_TETRAHEDRON of order 2: the same image;
 //  4. a NaN at one mid-edge node: the cells around that edge through their
 //     corners (counted, warned), no NaN, the reference applying the same rule;
-//  5. curved edges (mid-edge nodes moved off the midpoints by up to 5 % of an
+//  5. curved edges (mid-edge nodes moved off the midpoints by up to 3 % of an
 //     edge): refined (ppirayCurvedTetrahedra.h) into pieces rendered with
 //     straight edges (warned), against VTK's curved cells: the pieces'
 //     geometric error within the bounds below; 6. with the NaN of 4.
@@ -272,11 +272,9 @@ int TestGPURayCastQuadraticTetrahedra(int, char*[])
     errors += Fail("the cells around a NaN mid-edge value are not the ones through their corners");
   }
 
-  // 5. Curved cells (the lattice deformed: mid-edge nodes up to 5 % of an
-  // edge off the midpoint):
-  // every cell refined twice (64 pieces), the pieces within 0.4 % of an edge
-  // of straight. Rendered unrefined (straight edges: a mutation of
-  // RefinementLevels) the same view was p99 3.8, max 32 /255.
+  // 5. Curved cells (the lattice deformed: mid-edge nodes up to 2.9 % of an
+  // edge off the midpoint): every cell refined twice (64 pieces), the
+  // pieces within 0.4 % of an edge of straight.
   auto curved = Quadratic(lattice, VTK_QUADRATIC_TETRA, 0.06, wavy);
   textures->BuildGeometry(curved);
   std::cout << "curved cells " << textures->GetNumberOfCurvedCells() << ", deviation up to "
