@@ -93,6 +93,10 @@ std::string vtkPPIRayHexahedralCellBuffers::GetCellShader() const
   kinds << ");\nconst bool MIXED_CELLS = " << (mixed ? "true" : "false")
         << ";\nconst bool PYRAMID_CELLS = "
         << (cells.GetNumberOfCellsOfKind(ppiray::PYRAMID_KIND) > 0 ? "true" : "false")
+        << ";\nconst bool TETRAHEDRA_ONLY = "
+        << (cells.GetNumberOfCellsOfKind(ppiray::TETRAHEDRON_KIND) == cells.GetNumberOfHexahedra()
+               ? "true"
+               : "false")
         << ";\nconst bool QUADRATIC_FIELD = " << (cells.HasQuadraticField() ? "true" : "false")
         << ";\n";
   std::string glsl = cell_linear_fs;

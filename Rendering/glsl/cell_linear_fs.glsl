@@ -6,7 +6,7 @@
 // vtkPPIRayHexahedralCellBuffers with the kinds' tables
 // (ppirayLinearCellKinds.h): CELL_FACES[24 kind + 4 f + v], the faces'
 // corners wound outward (-1: none), CELL_FRAME[kind], the frame's edges;
-// MIXED_CELLS (false: hexahedra only), PYRAMID_CELLS:
+// MIXED_CELLS (false: hexahedra only), TETRAHEDRA_ONLY, PYRAMID_CELLS:
 //   hexCorners[6 h .. 6 h + 5]   up to 8 corners, 24 floats, right-handed
 //   hexNeighbors[2 h]            the neighbour codes through faces 0..3,
 //                                [2 h + 1]: faces 4, 5, the diagonal mask, kind
@@ -81,10 +81,11 @@ Cell loadCell(int h)
   return cell;
 }
 // The kind of a cell: read only in a mixed mesh (a constant otherwise, so
-// that the kind's tables fold into the code).
+// that the kind's tables fold into the code: hexahedra only, or tetrahedra
+// only, quadratic ones among them).
 int cellKind(Cell cell)
 {
-  return MIXED_CELLS ? cellKindLoaded : 0;
+  return TETRAHEDRA_ONLY ? 3 : (MIXED_CELLS ? cellKindLoaded : 0);
 }
 
 // Triangles of face f of a cell of `kind`: 2 (a quadrilateral), 1, or 0
