@@ -841,7 +841,8 @@ bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScala
   }
   // The refinement's added points: VTK's field of their cell, or through
   // its corners where that is NaN (ppirayCurvedTetrahedra.h).
-  const vtkIdType added = this->Refinement.Added.GetNumberOfPoints();
+  // (Point scalars only: cell scalars are read per cell.)
+  const vtkIdType added = cellScalars ? 0 : this->Refinement.Added.GetNumberOfPoints();
   std::vector<double> addedValues(added);
 #pragma omp parallel for schedule(static)
   for (vtkIdType i = 0; i < added; ++i)
