@@ -401,10 +401,14 @@ void vtkHexahedralCellTextures::RefineCurvedCells()
   // Every quadratic tetrahedron refined by the same levels (its pieces
   // conform across faces), when some are curved (ppirayCurvedTetrahedra.h).
   this->NumberOfGridPoints = static_cast<vtkIdType>(this->LocalPoints.size() / 3);
+  if (this->NumberOfCurvedCells == 0)
+  {
+    return;
+  }
   std::vector<std::array<vtkIdType, 10>> cells;
   std::vector<vtkIdType> index;
   const vtkIdType count = this->GetNumberOfHexahedra();
-  for (vtkIdType h = 0; h<count&& this->NumberOfCurvedCells> 0; ++h)
+  for (vtkIdType h = 0; h < count; ++h)
   {
     if (this->HasEdgeNodes(h))
     {
