@@ -230,7 +230,6 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   }
   this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
   this->DropFlatCells();
-  this->MeasureCurvedEdges();
   this->RefineCurvedCells();
   if (this->GetNumberOfHexahedra() == 0)
   {
@@ -311,9 +310,15 @@ bool vtkHexahedralCellTextures::CollectCells(vtkUnstructuredGrid* grid)
         ++this->NumberOfOtherCells;
         return;
       }
+      // A ten-node tetrahedron's field, unless its map folds; how curved it is.
+      const double deviation = ppiray::quadratic_tetrahedron::IsQuadraticTetrahedron(type, npts)
+                                 ? MidEdgeDeviation(grid->GetPoints(), pts)
+                                 : -1.0;
       const bool quadraticField =
-        ppiray::quadratic_tetrahedron::IsQuadraticTetrahedron(type, npts) &&
-        MidEdgeDeviation(grid->GetPoints(), pts) <= ppiray::quadratic_tetrahedron::FoldingDeviation;
+        deviation >= 0 && deviation <= ppiray::quadratic_tetrahedron::FoldingDeviation;
+      this->MaximumMidEdgeDeviation =
+        std::max(this->MaximumMidEdgeDeviation, quadraticField ? deviation : 0.0);
+      this->NumberOfCurvedCells += quadraticField && deviation > CurvedEdgeTolerance() ? 1 : 0;
       this->NumberOfQuadraticCells += shape.HigherOrder && !quadraticField ? 1 : 0;
       this->AddEdgeNodes(quadraticField ? pts + 4 : nullptr);
       ++this->NumberOfCellsOfKind[kind];
@@ -361,38 +366,6 @@ void vtkHexahedralCellTextures::AddEdgeNodes(const vtkIdType* mids)
 bool vtkHexahedralCellTextures::HasEdgeNodes(vtkIdType h) const
 {
   return !this->EdgeNodeIds.empty() && this->EdgeNodeIds[6 * h] >= 0;
-}
-
-//------------------------------------------------------------------------------
-void vtkHexahedralCellTextures::MeasureCurvedEdges()
-{
-  const vtkIdType count = this->GetNumberOfHexahedra();
-  if (this->EdgeNodeIds.empty())
-  {
-    return;
-  }
-  double worst = 0;
-  vtkIdType curved = 0;
-#pragma omp parallel for schedule(static) reduction(max : worst) reduction(+ : curved)
-  for (vtkIdType h = 0; h < count; ++h)
-  {
-    if (this->HasEdgeNodes(h))
-    {
-      const vtkIdType* c = this->CornerIds.data() + 8 * h;
-      const vtkIdType* m = this->EdgeNodeIds.data() + 6 * h;
-      const vtkIdType ids[10] = { c[0], c[1], c[2], c[3], m[0], m[1], m[2], m[3], m[4], m[5] };
-      double x[10][3];
-      for (int i = 0; i < 10; ++i)
-      {
-        std::copy_n(this->LocalPoints.data() + 3 * ids[i], 3, x[i]);
-      }
-      const double d = ppiray::quadratic_tetrahedron::MidEdgeDeviation(x);
-      worst = std::max(worst, d);
-      curved += d > CurvedEdgeTolerance() ? 1 : 0;
-    }
-  }
-  this->MaximumMidEdgeDeviation = worst;
-  this->NumberOfCurvedCells = curved;
 }
 
 //------------------------------------------------------------------------------

@@ -234,7 +234,6 @@ protected:
   bool HasEdgeNodes(vtkIdType h) const;
   void DropFlatCells();
   void OrientCells();
-  void MeasureCurvedEdges();
   void RefineCurvedCells();
   // Per refined cell: taken through its corners (a NaN mid-edge value).
   std::vector<unsigned char> RefinedThroughCorners(vtkDataArray* scalars, int component) const;

@@ -11,15 +11,17 @@ Usage: Module/run python Documentation/datasets/quadratic_tetrahedra_bench.py
 """
 import argparse
 import math
+import os
+import sys
 import time
 
 import ppiray
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdList, vtkPoints
-from vtkmodules.vtkCommonDataModel import (VTK_QUADRATIC_TETRA, vtkPiecewiseFunction,
-                                           vtkUnstructuredGrid)
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer,
-                                         vtkRenderWindow, vtkVolume, vtkVolumeProperty)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkCommonDataModel import VTK_QUADRATIC_TETRA, vtkUnstructuredGrid
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "Testing", "Python"))
+from ppiray_scene import scene, volume_property  # noqa: E402
 
 EDGES = [(0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3)]
 PATHS = [(0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0)]
@@ -73,32 +75,12 @@ def quadratic_block(cubes, bend):
 
 
 def window(grid, size):
-    prop = vtkVolumeProperty()
-    color = vtkColorTransferFunction()
-    color.AddRGBPoint(0.1, 0.1, 0.2, 0.9)
-    color.AddRGBPoint(0.65, 0.2, 0.9, 0.3)
-    color.AddRGBPoint(1.2, 0.95, 0.3, 0.1)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(0.1, 0.0)
-    opacity.AddPoint(1.2, 0.4)
-    prop.SetColor(color)
-    prop.SetScalarOpacity(opacity)
+    """ppiray_scene's window and transfer function, translucent (unit distance 0.5)."""
+    prop = volume_property(grid)
     prop.SetScalarOpacityUnitDistance(0.5)
     mapper = ppiray.vtkUnstructuredGridGPURayCastMapper()
-    mapper.SetInputData(grid)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
-    renderer = vtkRenderer()
-    renderer.AddVolume(volume)
-    win = vtkRenderWindow()
+    win, _ = scene(grid, mapper, size, prop)
     win.SetOffScreenRendering(1)
-    win.SetSize(size, size)
-    win.AddRenderer(renderer)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(2.5, 1.6, 3.0)
-    camera.SetFocalPoint(0.5, 0.5, 0.5)
-    renderer.ResetCamera()
     return win, mapper
 
 
