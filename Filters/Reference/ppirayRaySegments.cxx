@@ -14,6 +14,7 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -137,6 +138,56 @@ void FaceCrossings(
   }
 }
 
+// dN_i/dp_k of `cell` at pcoords into derivs[k n + i] (n nodes). VTK's
+// InterpolateDerivs writes that layout for most cells but derivs[dim i + k]
+// for Lagrange and Bezier ones (vtkHigherOrderInterpolation's
+// Tensor3ShapeDerivatives); which one a cell type writes is decided once,
+// against finite differences of its InterpolateFunctions.
+void ShapeDerivatives(vtkCell* cell, const double pcoords[3], std::vector<double>& derivs)
+{
+  static std::atomic<signed char> interleaved[VTK_NUMBER_OF_CELL_TYPES] = {};
+  const int n = static_cast<int>(cell->GetNumberOfPoints());
+  const int dim = cell->GetCellDimension(), type = cell->GetCellType();
+  derivs.resize(dim * n);
+  cell->InterpolateDerivs(const_cast<double*>(pcoords), derivs.data());
+  if (type < 0 || type >= VTK_NUMBER_OF_CELL_TYPES)
+  {
+    return;
+  }
+  if (interleaved[type] == 0)
+  {
+    const double p0[3] = { 0.21, 0.17, 0.13 }, h = 1e-6;
+    std::vector<double> d(dim * n), w0(n), w1(n);
+    cell->InterpolateDerivs(const_cast<double*>(p0), d.data());
+    cell->InterpolateFunctions(const_cast<double*>(p0), w0.data());
+    double blocked = 0, byNode = 0;
+    for (int k = 0; k < dim; ++k)
+    {
+      double p1[3] = { p0[0], p0[1], p0[2] };
+      p1[k] += h;
+      cell->InterpolateFunctions(p1, w1.data());
+      for (int i = 0; i < n; ++i)
+      {
+        const double fd = (w1[i] - w0[i]) / h;
+        blocked += std::abs(d[k * n + i] - fd);
+        byNode += std::abs(d[dim * i + k] - fd);
+      }
+    }
+    interleaved[type] = byNode < blocked ? 1 : -1;
+  }
+  if (interleaved[type] > 0)
+  {
+    const std::vector<double> byNode(derivs);
+    for (int i = 0; i < n; ++i)
+    {
+      for (int k = 0; k < dim; ++k)
+      {
+        derivs[k * n + i] = byNode[dim * i + k];
+      }
+    }
+  }
+}
+
 // Where the ray o + t d meets the curved face X(r, s) = sum_i N_i(r, s) X_i
 // (a quadratic or higher-order triangle or quadrilateral): Newton's method
 // on X(r, s) - centre - (o + t d) = 0 in (r, s, t), with the face's own
@@ -154,7 +205,7 @@ bool CurvedFaceCrossing(vtkCell* face, const Vec3& centre, const Vec3& o, const 
   for (int iteration = 0; iteration < 16; ++iteration)
   {
     face->InterpolateFunctions(pcoords, weights.data());
-    face->InterpolateDerivs(pcoords, derivs.data());
+    ShapeDerivatives(face, pcoords, derivs);
     Vec3 x(0.0), dr(0.0), ds(0.0);
     for (int i = 0; i < n; ++i)
     {
@@ -329,43 +380,98 @@ int InterpolatedPoints(vtkCell* cell)
 }
 
 //------------------------------------------------------------------------------
-void RefineParametricCoordinates(vtkCell* cell, const std::vector<Vec3>& nodes, const double x[3],
-  double pcoords[3], double* weights, std::vector<double>& derivs)
+bool InverseJacobian(vtkCell* cell, const std::vector<Vec3>& nodes, const double pcoords[3],
+  std::vector<double>& derivs, glm::dmat3& inverse)
 {
-  // Newton's method on x(p) = sum_i N_i(p) X_i - x = 0 from the p given,
+  // dx/dp = sum_i X_i (dN_i/dp)^T, columns dx/dr, dx/ds, dx/dt.
+  const int n = static_cast<int>(cell->GetNumberOfPoints());
+  ShapeDerivatives(cell, pcoords, derivs);
+  glm::dmat3 jacobian(0.0);
+  for (int i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      jacobian[k] += derivs[k * n + i] * nodes[i];
+    }
+  }
+  if (!(std::abs(glm::determinant(jacobian)) > 0))
+  {
+    return false;
+  }
+  inverse = glm::inverse(jacobian);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool RefineParametricCoordinates(vtkCell* cell, const std::vector<Vec3>& nodes, const double x[3],
+  double pcoords[3], double* weights, std::vector<double>& derivs, const glm::dmat3* chord)
+{
+  // Newton's method on r(p) = sum_i N_i(p) X_i - x = 0 from the p given,
   // with the cell's own N_i and dN_i/dp (InterpolateFunctions,
-  // InterpolateDerivs), until a step is below 1e-14.
+  // InterpolateDerivs), p -= J(p)^-1 r(p), until a step is below 1e-14.
+  // With `chord` (J^-1 at a nearby point): the chord method first,
+  // p -= chord r(p), which needs no derivatives (it converges linearly, at
+  // once where the map is affine); Newton where a step is not a quarter of
+  // the one before.
   const int n = static_cast<int>(cell->GetNumberOfPoints());
   derivs.resize(3 * n);
-  for (int iteration = 0; iteration < 8; ++iteration)
+  const auto residual = [&](const double p[3])
   {
-    cell->InterpolateFunctions(pcoords, weights);
-    cell->InterpolateDerivs(pcoords, derivs.data());
-    glm::dmat3 jacobian(0.0); // columns dx/dr, dx/ds, dx/dt
-    Vec3 residual(-x[0], -x[1], -x[2]);
+    cell->InterpolateFunctions(const_cast<double*>(p), weights);
+    Vec3 r(-x[0], -x[1], -x[2]);
     for (int i = 0; i < n; ++i)
     {
-      residual += weights[i] * nodes[i];
+      r += weights[i] * nodes[i];
+    }
+    return r;
+  };
+  const auto converged = [](const Vec3& step) {
+    return !(std::max({ std::abs(step[0]), std::abs(step[1]), std::abs(step[2]) }) > 1e-14);
+  };
+  if (chord)
+  {
+    double p[3] = { pcoords[0], pcoords[1], pcoords[2] },
+           previous = std::numeric_limits<double>::infinity();
+    for (int iteration = 0; iteration < 16; ++iteration)
+    {
+      const Vec3 step = *chord * residual(p);
+      if (converged(step)) // the weights are those at p, within 1e-14
+      {
+        std::copy_n(p, 3, pcoords);
+        return true;
+      }
+      const double size = std::max({ std::abs(step[0]), std::abs(step[1]), std::abs(step[2]) });
+      if (!(size < 0.25 * previous))
+      {
+        break; // contracting slowly (a curved map): Newton instead
+      }
+      previous = size;
       for (int k = 0; k < 3; ++k)
       {
-        jacobian[k] += derivs[k * n + i] * nodes[i];
+        p[k] -= step[k];
       }
     }
-    if (!(std::abs(glm::determinant(jacobian)) > 0))
+  }
+  for (int iteration = 0; iteration < 8; ++iteration)
+  {
+    const Vec3 r = residual(pcoords);
+    glm::dmat3 inverse;
+    if (!InverseJacobian(cell, nodes, pcoords, derivs, inverse))
     {
       break;
     }
-    const Vec3 step = glm::inverse(jacobian) * residual;
+    const Vec3 step = inverse * r;
     for (int k = 0; k < 3; ++k)
     {
       pcoords[k] -= step[k];
     }
-    if (!(std::max({ std::abs(step[0]), std::abs(step[1]), std::abs(step[2]) }) > 1e-14))
+    if (converged(step))
     {
       break;
     }
   }
   cell->InterpolateFunctions(pcoords, weights);
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -469,6 +575,8 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
   const bool nonlinear = !polyhedron && !cell->IsLinear();
   std::vector<double> derivs;
   double midpoint[3] = { 0, 0, 0 }; // pcoords of the last inside test's point
+  glm::dmat3 chord(1.0);            // the map's inverse Jacobian there
+  bool hasChord = false, chordWorks = true;
   std::vector<Vec3> nodes(nonlinear ? cell->GetNumberOfPoints() : 0);
   for (size_t i = 0; i < nodes.size(); ++i)
   {
@@ -495,9 +603,12 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
     }
     else if (nonlinear && !insideTest)
     {
-      // Inside an interval whose midpoint was found: Newton from there.
+      // Inside an interval whose midpoint was found: from there, with the
+      // map's inverse Jacobian there.
+      // Once that fails in this cell, Newton alone.
       std::copy_n(midpoint, 3, pcoords);
-      RefineParametricCoordinates(cell, nodes, x, pcoords, weights.data(), derivs);
+      chordWorks = RefineParametricCoordinates(
+        cell, nodes, x, pcoords, weights.data(), derivs, hasChord && chordWorks ? &chord : nullptr);
     }
     else
     {
@@ -506,6 +617,7 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
       {
         RefineParametricCoordinates(cell, nodes, x, pcoords, weights.data(), derivs);
         std::copy_n(pcoords, 3, midpoint);
+        hasChord = InverseJacobian(cell, nodes, midpoint, derivs, chord);
       }
     }
     if (linear)

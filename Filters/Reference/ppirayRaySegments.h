@@ -66,9 +66,16 @@ int InterpolatedPoints(vtkCell* cell);
 
 // pcoords of x in `cell` (its points `nodes`) refined from the pcoords given
 // by Newton's method on the cell's own functions, and the interpolation
-// weights there.
-void RefineParametricCoordinates(vtkCell* cell, const std::vector<glm::dvec3>& nodes,
-  const double x[3], double pcoords[3], double* weights, std::vector<double>& derivs);
+// weights there; with `chord` (the map's inverse Jacobian near there), by the
+// chord method first (true where that converged).
+bool RefineParametricCoordinates(vtkCell* cell, const std::vector<glm::dvec3>& nodes,
+  const double x[3], double pcoords[3], double* weights, std::vector<double>& derivs,
+  const glm::dmat3* chord = nullptr);
+
+// The inverse of the Jacobian dx/dp of `cell`'s map at pcoords (false where
+// it is singular).
+bool InverseJacobian(vtkCell* cell, const std::vector<glm::dvec3>& nodes, const double pcoords[3],
+  std::vector<double>& derivs, glm::dmat3& inverse);
 
 // The linear type of a quadratic or higher-order cell's corners (its first
 // `corners` points; 0 and 0 for other cells).

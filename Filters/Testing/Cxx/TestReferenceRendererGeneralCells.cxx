@@ -14,7 +14,11 @@
 //    with NaN in a normalized stress never finished);
 // 5. hexahedra listing 20 point ids (a serendipity hexahedron written as
 //    VTK_HEXAHEDRON, mid-edge values NaN) render from their 8 corners;
-// 6. progress events go from 0 to 1 in order.
+// 6. progress events go from 0 to 1 in order;
+// 7. a constant field renders as the same cells as tetrahedra, quickly;
+// 8. Lagrange hexahedra of order 3 (64 nodes; VTK writes their shape
+//    derivatives node by node, not by direction) with the linear field of 1.
+//    render like the same cells as hexahedra.
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
@@ -25,6 +29,7 @@
 #include "vtkFloatArray.h"
 #include "vtkGenericCell.h"
 #include "vtkImageData.h"
+#include "vtkLagrangeHexahedron.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
@@ -352,6 +357,40 @@ int TestReferenceRendererGeneralCells(int, char*[])
     if (!(apart < 1e-7))
     {
       std::printf("FAILED: a constant field in general cells\n");
+      ++errors;
+    }
+  }
+  // 8. Lagrange hexahedra of order 3 over the sheared cells of 1.
+  {
+    vtkNew<vtkLagrangeHexahedron> lagrange;
+    lagrange->GetPointIds()->SetNumberOfIds(64);
+    lagrange->GetPoints()->SetNumberOfPoints(64);
+    lagrange->SetUniformOrderFromNumPoints(64);
+    const double* nodes = lagrange->GetParametricCoords();
+    vtkNew<vtkUnstructuredGrid> cubic;
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkDoubleArray> values;
+    values->SetName("s");
+    for (int c = 0; c < 27; ++c)
+    {
+      std::vector<vtkIdType> ids(64);
+      for (int i = 0; i < 64; ++i)
+      {
+        double x[3] = { (c % 3 + nodes[3 * i]) / 3, (c / 3 % 3 + nodes[3 * i + 1]) / 3,
+          (c / 9 + nodes[3 * i + 2]) / 3 };
+        shear(x);
+        ids[i] = points->InsertNextPoint(x);
+        values->InsertNextValue(linear(x));
+      }
+      cubic->InsertNextCell(VTK_LAGRANGE_HEXAHEDRON, 64, ids.data());
+    }
+    cubic->SetPoints(points);
+    cubic->GetPointData()->SetScalars(values);
+    const double apart = MaxDifference(Render(cubic, property, camera), a);
+    std::printf("Lagrange hexahedra of order 3 vs hexahedra: max difference %.2e\n", apart);
+    if (!(apart < 1e-6))
+    {
+      std::printf("FAILED: Lagrange hexahedra render differently from the same hexahedra\n");
       ++errors;
     }
   }
