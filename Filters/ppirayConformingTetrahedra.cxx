@@ -294,6 +294,23 @@ bool QuadDiagonals::AlongFirstDiagonal(vtkIdType a, vtkIdType b, vtkIdType c, vt
 }
 
 //------------------------------------------------------------------------------
+void AppendConeSplit(int kind, const vtkIdType* pts, std::vector<int>& tets)
+{
+  const auto& info = LinearCellKindOf(kind);
+  if (kind == TETRAHEDRON_KIND)
+  {
+    tets.insert(tets.end(), { 0, 1, 2, 3 });
+    return;
+  }
+  std::vector<vtkIdType> cone;
+  AppendCone(info, pts, SmallestPoint(pts, info.Corners), QuadDiagonals(), cone);
+  for (const vtkIdType id : cone)
+  {
+    tets.push_back(static_cast<int>(std::find(pts, pts + info.Corners, id) - pts));
+  }
+}
+
+//------------------------------------------------------------------------------
 void SplitIntoTetrahedra(vtkUnstructuredGrid* grid, bool tetrahedraOnly, TetrahedralSplit& split)
 {
   // Cleared, not replaced: the storage passed in (a rebuild's) is reused.

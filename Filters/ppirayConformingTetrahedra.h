@@ -119,6 +119,14 @@ PPIRAYFILTERS_EXPORT void SplitIntoTetrahedra(
   vtkUnstructuredGrid* grid, bool tetrahedraOnly, TetrahedralSplit& split);
 
 /**
+ * The cone split of a linear cell of `kind` (ppiray::LinearCellKind) with
+ * distinct corner ids `pts` (in VTK's order for the kind) from its smallest
+ * corner, quadrilaterals along the diagonal through their smallest id: 4
+ * corner indices (into pts) per tetrahedron appended to `tets`.
+ */
+PPIRAYFILTERS_EXPORT void AppendConeSplit(int kind, const vtkIdType* pts, std::vector<int>& tets);
+
+/**
  * The diagonal rule: true if quadrilateral (a, b, c, d) is split along a-c,
  * false if along b-d; the diagonal through the smallest of the four ids.
  */

@@ -2,8 +2,8 @@
 
 #include "ppirayCellAdjacency.h"
 #include "ppirayConformingTetrahedra.h"
-#include "ppirayCurvedTetrahedra.h"
 #include "ppirayHiddenCells.h"
+#include "ppirayHigherOrderPieces.h"
 #include "ppirayInvertedSheets.h"
 #include "ppirayLinearCellKinds.h"
 #include "ppirayMeshLocalFrame.h"
@@ -230,7 +230,7 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   }
   this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
   this->DropFlatCells();
-  this->RefineCurvedCells();
+  this->RefineHigherOrderCells(grid);
   if (this->GetNumberOfHexahedra() == 0)
   {
     return false;
@@ -284,13 +284,15 @@ void vtkHexahedralCellTextures::Clear()
   this->NumberOfFlatHexahedra = 0;
   this->NumberOfOtherCells = 0;
   this->NumberOfQuadraticCells = 0;
+  this->NumberOfHigherOrderCells = 0;
   this->NumberOfCurvedCells = 0;
   this->MaximumMidEdgeDeviation = 0;
   this->RefinementLevels = 0;
-  this->Refinement = ppiray::RefinedTetrahedra();
-  this->RefinedNodes.clear();
+  this->Refinement = ppiray::HigherOrderPieces();
+  this->RefinedPointOffsets.clear();
+  this->RefinedPointIds.clear();
+  this->RefinedCorners.clear();
   this->PieceCell.clear();
-  this->PieceCorners.clear();
 }
 
 //------------------------------------------------------------------------------
@@ -319,7 +321,8 @@ bool vtkHexahedralCellTextures::CollectCells(vtkUnstructuredGrid* grid)
       this->MaximumMidEdgeDeviation =
         std::max(this->MaximumMidEdgeDeviation, quadraticField ? deviation : 0.0);
       this->NumberOfCurvedCells += quadraticField && deviation > CurvedEdgeTolerance() ? 1 : 0;
-      this->NumberOfQuadraticCells += shape.HigherOrder && !quadraticField ? 1 : 0;
+      this->NumberOfQuadraticCells += deviation >= 0 && !quadraticField ? 1 : 0;
+      this->NumberOfHigherOrderCells += shape.HigherOrder && deviation < 0 ? 1 : 0;
       this->AddEdgeNodes(quadraticField ? pts + 4 : nullptr);
       ++this->NumberOfCellsOfKind[kind];
       this->CellIds.push_back(cellId);
@@ -332,7 +335,8 @@ bool vtkHexahedralCellTextures::CollectCells(vtkUnstructuredGrid* grid)
       }
     });
   const vtkIdType all = static_cast<vtkIdType>(this->CellIds.size());
-  if (this->NumberOfCellsOfKind[ppiray::TETRAHEDRON_KIND] == all && this->EdgeNodeIds.empty())
+  if (this->NumberOfCellsOfKind[ppiray::TETRAHEDRON_KIND] == all && this->EdgeNodeIds.empty() &&
+      this->NumberOfHigherOrderCells == 0)
   {
     // Linear tetrahedra only (or nothing): the tetrahedral textures' mesh.
     this->CellIds.clear();
@@ -369,44 +373,95 @@ bool vtkHexahedralCellTextures::HasEdgeNodes(vtkIdType h) const
 }
 
 //------------------------------------------------------------------------------
-void vtkHexahedralCellTextures::RefineCurvedCells()
+void vtkHexahedralCellTextures::RefineHigherOrderCells(vtkUnstructuredGrid* grid)
 {
-  // Every quadratic tetrahedron refined by the same levels (its pieces
-  // conform across faces), when some are curved (ppirayCurvedTetrahedra.h).
+  // The higher-order cells other than ten-node tetrahedra always, those too
+  // when the levels are 1 or more, all by the same levels (their pieces
+  // conform across faces: ppirayHigherOrderPieces.h).
   this->NumberOfGridPoints = static_cast<vtkIdType>(this->LocalPoints.size() / 3);
-  if (this->NumberOfCurvedCells == 0)
+  std::vector<vtkIdType> others, quadratic; // indices of cells kept so far
+  for (vtkIdType h = 0; h < this->GetNumberOfHexahedra(); ++h)
   {
-    return;
-  }
-  std::vector<std::array<vtkIdType, 10>> cells;
-  std::vector<vtkIdType> index;
-  const vtkIdType count = this->GetNumberOfHexahedra();
-  for (vtkIdType h = 0; h < count; ++h)
-  {
+    const int type = grid->GetCellType(this->CellIds[h]);
     if (this->HasEdgeNodes(h))
     {
-      const vtkIdType* c = this->CornerIds.data() + 8 * h;
-      const vtkIdType* m = this->EdgeNodeIds.data() + 6 * h;
-      cells.push_back({ c[0], c[1], c[2], c[3], m[0], m[1], m[2], m[3], m[4], m[5] });
-      index.push_back(h);
+      quadratic.push_back(h);
+    }
+    else if (ppiray::LinearShapeOf(type).HigherOrder &&
+             !ppiray::quadratic_tetrahedron::IsQuadraticTetrahedron(
+               type, grid->GetCellSize(this->CellIds[h])))
+    {
+      others.push_back(h);
     }
   }
-  this->RefinementLevels = ppiray::RefinementLevels(this->MaximumMidEdgeDeviation,
-    CurvedEdgeTolerance(), static_cast<vtkIdType>(cells.size()), 3,
-    std::max(8 * static_cast<vtkIdType>(cells.size()), MaximumRefinedPieces()));
-  if (this->RefinementLevels == 0)
+  const auto inputIds = [&](const std::vector<vtkIdType>& cells)
+  {
+    std::vector<vtkIdType> ids(cells.size());
+    std::transform(
+      cells.begin(), cells.end(), ids.begin(), [&](vtkIdType h) { return this->CellIds[h]; });
+    return ids;
+  };
+  // Unrefined, the other cells' pieces: how curved they are.
+  double deviation = this->MaximumMidEdgeDeviation;
+  vtkIdType pieces = static_cast<vtkIdType>(quadratic.size());
+  if (!others.empty())
+  {
+    ppiray::RefineHigherOrderCells(
+      grid, this->LocalPoints.data(), inputIds(others), 0, this->Refinement);
+    deviation = std::max(deviation, this->Refinement.MaximumMidEdgeDeviation);
+    pieces += static_cast<vtkIdType>(this->Refinement.Pieces.size());
+  }
+  this->RefinementLevels = ppiray::RefinementLevels(deviation, CurvedEdgeTolerance(), pieces,
+    others.empty() ? 0 : this->MinimumRefinementLevel, 3,
+    std::max(8 * pieces, MaximumRefinedPieces()));
+  this->MaximumMidEdgeDeviation = deviation;
+  if (this->RefinementLevels == 0 && others.empty())
   {
     return;
   }
-  ppiray::RefineQuadraticTetrahedra(this->LocalPoints.data(), this->NumberOfGridPoints, cells,
-    this->RefinementLevels, this->Refinement);
+  std::vector<vtkIdType> refined(others);
+  if (this->RefinementLevels > 0)
+  {
+    refined.insert(refined.end(), quadratic.begin(), quadratic.end());
+    ppiray::RefineHigherOrderCells(
+      grid, this->LocalPoints.data(), inputIds(refined), this->RefinementLevels, this->Refinement);
+  }
+  this->RefinedPointOffsets.assign(1, 0);
+  for (const vtkIdType h : refined)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    grid->GetCellPoints(this->CellIds[h], npts, pts);
+    this->RefinedPointIds.insert(this->RefinedPointIds.end(), pts, pts + npts);
+    this->RefinedPointOffsets.push_back(static_cast<vtkIdType>(this->RefinedPointIds.size()));
+    this->RefinedCorners.push_back(static_cast<unsigned char>(
+      ppiray::LinearShapeOf(grid->GetCellType(this->CellIds[h])).Corners));
+  }
+  this->ReplaceByPieces(refined);
+}
+
+//------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::ReplaceByPieces(const std::vector<vtkIdType>& refined)
+{
+  // The cells kept in place, the pieces after them.
   const auto& added = this->Refinement.Added.Points;
   this->LocalPoints.insert(this->LocalPoints.end(), added.begin(), added.end());
-  // The cells kept in place, the pieces after them.
+  const vtkIdType count = this->GetNumberOfHexahedra();
+  if (this->EdgeNodeIds.empty())
+  {
+    this->EdgeNodeIds.assign(6 * count, -1);
+  }
+  std::vector<unsigned char> isRefined(count, 0);
+  for (const vtkIdType h : refined)
+  {
+    isRefined[h] = 1;
+    --this->NumberOfCellsOfKind[this->Kinds[h]];
+  }
+  const std::vector<vtkIdType> cellIds(this->CellIds);
   vtkIdType kept = 0;
   for (vtkIdType h = 0; h < count; ++h)
   {
-    if (!this->HasEdgeNodes(h))
+    if (!isRefined[h])
     {
       std::copy_n(this->CornerIds.data() + 8 * h, 8, this->CornerIds.data() + 8 * kept);
       std::copy_n(this->EdgeNodeIds.data() + 6 * h, 6, this->EdgeNodeIds.data() + 6 * kept);
@@ -414,17 +469,9 @@ void vtkHexahedralCellTextures::RefineCurvedCells()
       this->Kinds[kept++] = this->Kinds[h];
     }
   }
-  const std::vector<vtkIdType> cellIds(this->CellIds);
-  for (const auto& nodes : cells)
-  {
-    this->RefinedNodes.insert(this->RefinedNodes.end(), nodes.begin(), nodes.end());
-  }
   this->PieceCell.assign(kept, -1);
   this->PieceCell.insert(
     this->PieceCell.end(), this->Refinement.Cell.begin(), this->Refinement.Cell.end());
-  this->PieceCorners.assign(kept, ppiray::PieceCorners());
-  this->PieceCorners.insert(
-    this->PieceCorners.end(), this->Refinement.Corners.begin(), this->Refinement.Corners.end());
   this->CellIds.resize(kept);
   this->Kinds.resize(kept);
   this->CornerIds.resize(8 * kept);
@@ -432,7 +479,7 @@ void vtkHexahedralCellTextures::RefineCurvedCells()
   for (size_t p = 0; p < this->Refinement.Pieces.size(); ++p)
   {
     const auto& nodes = this->Refinement.Pieces[p];
-    this->CellIds.push_back(cellIds[index[this->Refinement.Cell[p]]]);
+    this->CellIds.push_back(cellIds[refined[this->Refinement.Cell[p]]]);
     this->Kinds.push_back(ppiray::TETRAHEDRON_KIND);
     for (int i = 0; i < 8; ++i)
     {
@@ -441,49 +488,29 @@ void vtkHexahedralCellTextures::RefineCurvedCells()
     this->EdgeNodeIds.insert(this->EdgeNodeIds.end(), nodes.begin() + 4, nodes.end());
   }
   this->NumberOfCellsOfKind[ppiray::TETRAHEDRON_KIND] +=
-    static_cast<vtkIdType>(this->Refinement.Pieces.size() - cells.size());
+    static_cast<vtkIdType>(this->Refinement.Pieces.size());
 }
 
 //------------------------------------------------------------------------------
-std::vector<unsigned char> vtkHexahedralCellTextures::RefinedThroughCorners(
+std::vector<unsigned char> vtkHexahedralCellTextures::RefinedFields(
   vtkDataArray* scalars, int component) const
 {
-  // A refined cell is taken through its corners, as an unrefined one is,
-  // when its corners are finite and a mid-edge value is NaN.
-  const vtkIdType cells = static_cast<vtkIdType>(this->RefinedNodes.size() / 10);
-  std::vector<unsigned char> linear(cells, 0);
-  for (vtkIdType c = 0; c < cells; ++c)
+  // A refined cell is empty when a corner value is NaN, and taken through
+  // its corners, as an unrefined one is, when only another node's is.
+  const size_t cells = this->RefinedCorners.size();
+  std::vector<unsigned char> fields(cells, 0);
+  for (size_t c = 0; c < cells; ++c)
   {
-    bool corners = true, mids = true;
-    for (int i = 0; i < 10; ++i)
+    bool corners = true, others = true;
+    for (vtkIdType k = this->RefinedPointOffsets[c]; k < this->RefinedPointOffsets[c + 1]; ++k)
     {
-      const bool finite =
-        !std::isnan(scalars->GetComponent(this->RefinedNodes[10 * c + i], component));
-      (i < 4 ? corners : mids) = (i < 4 ? corners : mids) && finite;
+      const bool finite = !std::isnan(scalars->GetComponent(this->RefinedPointIds[k], component));
+      const bool corner = k - this->RefinedPointOffsets[c] < this->RefinedCorners[c];
+      (corner ? corners : others) = (corner ? corners : others) && finite;
     }
-    linear[c] = corners && !mids ? 1 : 0;
+    fields[c] = !corners ? EMPTY : (!others ? THROUGH_CORNERS : 0);
   }
-  return linear;
-}
-
-//------------------------------------------------------------------------------
-bool vtkHexahedralCellTextures::PieceThroughCorners(vtkIdType h,
-  const std::vector<unsigned char>& linear, vtkDataArray* scalars, int component, double s[8]) const
-{
-  const vtkIdType cell = this->PieceCell.empty() ? -1 : this->PieceCell[h];
-  if (cell < 0 || !linear[cell])
-  {
-    return false;
-  }
-  double corners[4], values[4];
-  for (int i = 0; i < 4; ++i)
-  {
-    corners[i] = scalars->GetComponent(this->RefinedNodes[10 * cell + i], component);
-  }
-  ppiray::LinearCornerValues(this->PieceCorners[h], this->Refinement.Resolution, corners, values);
-  std::copy_n(values, 4, s);
-  std::fill(s + 4, s + 8, values[0]);
-  return true;
+  return fields;
 }
 
 //------------------------------------------------------------------------------
@@ -553,14 +580,6 @@ void vtkHexahedralCellTextures::OrientCells()
         vtkIdType renumbered[6];
         ppiray::quadratic_tetrahedron::RenumberEdgeNodes(mirror, mids, renumbered);
         std::copy_n(renumbered, 6, mids);
-        if (!this->PieceCorners.empty())
-        {
-          const ppiray::PieceCorners corners = this->PieceCorners[h];
-          for (int i = 0; i < 4; ++i)
-          {
-            this->PieceCorners[h][i] = corners[mirror[i]];
-          }
-        }
       }
       ++mirroredCells;
     }
@@ -817,28 +836,40 @@ bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScala
     return false;
   }
   // The refinement's added points: VTK's field of their cell, or through
-  // its corners where that is NaN (ppirayCurvedTetrahedra.h).
+  // its corners where that is NaN (ppirayHigherOrderPieces.h).
   // (Point scalars only: cell scalars are read per cell.)
-  const vtkIdType added = cellScalars ? 0 : this->Refinement.Added.GetNumberOfPoints();
+  const ppiray::HigherOrderPieces& pieces = this->Refinement;
+  const vtkIdType added = cellScalars ? 0 : pieces.Added.GetNumberOfPoints();
   std::vector<double> addedValues(added);
 #pragma omp parallel for schedule(static)
   for (vtkIdType i = 0; i < added; ++i)
   {
-    const double v = this->Refinement.Added.Value(i, scalars, component);
-    addedValues[i] = std::isnan(v) ? this->Refinement.Linear.Value(i, scalars, component) : v;
+    const double v = pieces.Added.Value(i, scalars, component);
+    addedValues[i] = std::isnan(v) ? pieces.Linear.Value(i, scalars, component) : v;
   }
   const vtkIdType gridPoints = this->NumberOfGridPoints;
   const auto value = [&](vtkIdType id)
   { return id < gridPoints ? scalars->GetComponent(id, component) : addedValues[id - gridPoints]; };
-  const std::vector<unsigned char> linear =
-    cellScalars ? std::vector<unsigned char>() : this->RefinedThroughCorners(scalars, component);
+  const auto linearValue = [&](vtkIdType id)
+  {
+    return id < gridPoints ? scalars->GetComponent(id, component)
+                           : pieces.Linear.Value(id - gridPoints, scalars, component);
+  };
+  const std::vector<unsigned char> fields =
+    cellScalars ? std::vector<unsigned char>() : this->RefinedFields(scalars, component);
+  const auto fieldOf = [&](vtkIdType h)
+  {
+    const vtkIdType cell = this->PieceCell.empty() ? -1 : this->PieceCell[h];
+    return cellScalars || cell < 0 ? 0 : fields[cell];
+  };
   vtkIdType nanCells = 0, linearized = 0;
 #pragma omp parallel for schedule(static) reduction(+ : nanCells, linearized)
   for (vtkIdType h = 0; h < numberOfHexahedra; ++h)
   {
     float* out = this->Coefficients.data() + stride * h;
+    const int field = fieldOf(h);
     double s[8];
-    bool hasNaN = false;
+    bool hasNaN = field == EMPTY;
     if (cellScalars)
     {
       s[0] = scalars->GetComponent(this->CellIds[h], component);
@@ -849,29 +880,33 @@ bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScala
     {
       for (int i = 0; i < 8; ++i)
       {
-        s[i] = value(this->CornerIds[8 * h + i]);
+        const vtkIdType id = this->CornerIds[8 * h + i];
+        s[i] = field == THROUGH_CORNERS ? linearValue(id) : value(id);
         hasNaN = hasNaN || std::isnan(s[i]);
       }
     }
-    const bool throughCorners =
-      !cellScalars && this->PieceThroughCorners(h, linear, scalars, component, s);
-    hasNaN = hasNaN && !throughCorners;
     if (hasNaN || (h < static_cast<vtkIdType>(this->Hidden.size()) && this->Hidden[h]))
     {
       out[0] = TransparentCellOffset();
-      nanCells += hasNaN ? 1 : 0;
+      const vtkIdType cell = this->PieceCell.empty() ? -1 : this->PieceCell[h];
+      const bool firstPiece = cell < 0 || h == 0 || this->PieceCell[h - 1] != cell;
+      nanCells += hasNaN && firstPiece ? 1 : 0; // counted per input cell
       continue;
     }
     CellCoefficients(
       this->Kinds[h], this->LocalPoints.data(), this->CornerIds.data() + 8 * h, s, out);
-    if (!cellScalars && !throughCorners && this->HasEdgeNodes(h))
+    if (!cellScalars && field == THROUGH_CORNERS)
+    {
+      QuadraticCoefficients(linearValue, this->EdgeNodeIds.data() + 6 * h, s, out);
+    }
+    else if (!cellScalars && this->HasEdgeNodes(h))
     {
       linearized += QuadraticCoefficients(value, this->EdgeNodeIds.data() + 6 * h, s, out) ? 0 : 1;
     }
   }
   this->NumberOfNaNScalars = nanCells;
-  this->NumberOfLinearizedCells =
-    linearized + std::count(linear.begin(), linear.end(), static_cast<unsigned char>(1));
+  this->NumberOfLinearizedCells = linearized + std::count(fields.begin(), fields.end(),
+                                                 static_cast<unsigned char>(THROUGH_CORNERS));
   this->Modified();
   return true;
 }
@@ -892,6 +927,8 @@ void vtkHexahedralCellTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfFlatHexahedra: " << this->NumberOfFlatHexahedra << "\n";
   os << indent << "NumberOfOtherCells: " << this->NumberOfOtherCells << "\n";
   os << indent << "NumberOfQuadraticCells: " << this->NumberOfQuadraticCells << "\n";
+  os << indent << "NumberOfHigherOrderCells: " << this->NumberOfHigherOrderCells << "\n";
+  os << indent << "MinimumRefinementLevel: " << this->MinimumRefinementLevel << "\n";
   os << indent << "NumberOfCurvedCells: " << this->NumberOfCurvedCells << "\n";
   os << indent << "MaximumMidEdgeDeviation: " << this->MaximumMidEdgeDeviation << "\n";
   os << indent << "NumberOfLinearizedCells: " << this->NumberOfLinearizedCells << "\n";

@@ -33,8 +33,10 @@
  * of order 2: their quadratic field, in the straight-edged tetrahedron of
  * their corners; through their corners where a mid-edge node is so far off
  * its edge's midpoint that the cell's map may fold,
- * ppirayQuadraticTetrahedra.h) and the corners of the other quadratic and
- * higher-order forms, in one grid (a
+ * ppirayQuadraticTetrahedra.h) and the other quadratic and higher-order
+ * tetrahedra, hexahedra, wedges and pyramids (refined into ten-node
+ * tetrahedra with VTK's map and field at their nodes,
+ * ppirayHigherOrderPieces.h: GetRefinementLevels()), in one grid (a
  * "hexahedron" below is any of them: its kind, ppirayLinearCellKinds.h, is
  * stored with its neighbours; a kind with fewer than 8 corners repeats
  * corner 0 in the unused slots, and has fewer faces). Zero-volume ones
@@ -46,10 +48,10 @@
 #ifndef vtkHexahedralCellTextures_h
 #define vtkHexahedralCellTextures_h
 
-#include "ppirayCellAdjacency.h"    // for ppiray::CellAdjacencyCache
-#include "ppirayCurvedTetrahedra.h" // for ppiray::RefinedTetrahedra
-#include "ppirayFiltersModule.h"    // for export macro
-#include "ppirayStageTimes.h"       // for ppiray::StageTimes
+#include "ppirayCellAdjacency.h"     // for ppiray::CellAdjacencyCache
+#include "ppirayFiltersModule.h"     // for export macro
+#include "ppirayHigherOrderPieces.h" // for ppiray::HigherOrderPieces
+#include "ppirayStageTimes.h"        // for ppiray::StageTimes
 #include "vtkObject.h"
 
 #include <vector> // for std::vector
@@ -158,6 +160,7 @@ public:
   vtkGetMacro(NumberOfSplitQuadrilaterals, vtkIdType);
   /** Boundary faces with a reflex edge (ReentryFace()). */
   vtkGetMacro(NumberOfReentryFaces, vtkIdType);
+  /** Input cells rendered empty for a NaN scalar (a refined cell counts once). */
   vtkGetMacro(NumberOfNaNScalars, vtkIdType);
   /**
    * Hexahedra whose frame is singular, |det M| <= 1e-6 |a| |b| |c|, at every
@@ -170,8 +173,16 @@ public:
   /** Zero-volume hexahedra left out (not in GetNumberOfHexahedra()). */
   vtkGetMacro(NumberOfFlatHexahedra, vtkIdType);
   vtkGetMacro(NumberOfOtherCells, vtkIdType);
-  /** Quadratic and higher-order cells rendered through their linear corners. */
+  /**
+   * Quadratic tetrahedra rendered through their linear corners (a mid-edge
+   * node beyond FoldingDeviation: the cell's map may fold).
+   */
   vtkGetMacro(NumberOfQuadraticCells, vtkIdType);
+  /**
+   * Quadratic and higher-order cells other than ten-node tetrahedra: always
+   * refined (GetRefinementLevels()).
+   */
+  vtkGetMacro(NumberOfHigherOrderCells, vtkIdType);
   /** Whether some cells carry a quadratic field (ten-node tetrahedra). */
   bool HasQuadraticField() const { return !this->EdgeNodeIds.empty(); }
   /**
@@ -182,18 +193,28 @@ public:
   vtkGetMacro(MaximumMidEdgeDeviation, double);
   static constexpr double CurvedEdgeTolerance() { return 4e-3; }
   /**
-   * Levels every quadratic tetrahedron is refined by when some are curved
-   * (ppirayCurvedTetrahedra.h): the fewest that bring the largest mid-edge
-   * offset below CurvedEdgeTolerance() of an edge (it shrinks fourfold per
-   * level), at most 3, and at most MaximumRefinedPieces() pieces in all or
-   * one level (8 pieces a cell, as many as vtkDataSetTriangleFilter's linear
-   * tetrahedra) if that is more. The pieces are rendered with straight edges.
+   * Levels the higher-order cells are refined by (ppirayHigherOrderPieces.h),
+   * all by the same so that their pieces conform: the fewest that bring the
+   * largest mid-edge offset of a piece below CurvedEdgeTolerance() of an edge
+   * (it shrinks fourfold per level), at least GetMinimumRefinementLevel()
+   * when there are higher-order cells other than ten-node tetrahedra, at
+   * most 3, and at most MaximumRefinedPieces() pieces in all or one level if
+   * that is more. Ten-node tetrahedra are refined only with 1 level or more
+   * (they are exact unrefined). The pieces are rendered with straight edges.
    */
   vtkGetMacro(RefinementLevels, int);
+  /**
+   * The fewest levels cells other than ten-node tetrahedra are refined by
+   * (like ParaView's Nonlinear Subdivision Level): each level cuts the
+   * interpolation error of a smooth field about eightfold and multiplies the
+   * pieces by 8. Default 0; at most 3.
+   */
+  vtkSetClampMacro(MinimumRefinementLevel, int, 0, 3);
+  vtkGetMacro(MinimumRefinementLevel, int);
   static constexpr vtkIdType MaximumRefinedPieces() { return vtkIdType(1) << 20; }
   /**
-   * Quadratic tetrahedra with a NaN at a mid-edge node (not at a corner):
-   * rendered linear, through their corners.
+   * Quadratic and higher-order cells with a NaN at a node other than a
+   * corner (none at a corner): rendered through their corners.
    */
   vtkGetMacro(NumberOfLinearizedCells, vtkIdType);
 
@@ -234,12 +255,16 @@ protected:
   bool HasEdgeNodes(vtkIdType h) const;
   void DropFlatCells();
   void OrientCells();
-  void RefineCurvedCells();
-  // Per refined cell: taken through its corners (a NaN mid-edge value).
-  std::vector<unsigned char> RefinedThroughCorners(vtkDataArray* scalars, int component) const;
-  // Corner values s of piece h when its cell is taken through its corners.
-  bool PieceThroughCorners(vtkIdType h, const std::vector<unsigned char>& linear,
-    vtkDataArray* scalars, int component, double s[8]) const;
+  void RefineHigherOrderCells(vtkUnstructuredGrid* grid);
+  void ReplaceByPieces(const std::vector<vtkIdType>& refined);
+  // Per refined cell: THROUGH_CORNERS (a NaN at a node other than a corner),
+  // EMPTY (a NaN at a corner) or 0.
+  enum RefinedField
+  {
+    THROUGH_CORNERS = 1,
+    EMPTY = 2
+  };
+  std::vector<unsigned char> RefinedFields(vtkDataArray* scalars, int component) const;
   void StoreCorners();
   ppiray::CellFaceMesh FaceMesh() const; // the cells for ppiray::MatchCellFaces
   std::vector<vtkIdType> MatchFaces();   // the boundary faces, 6 h + f
@@ -273,15 +298,18 @@ protected:
   vtkIdType NumberOfFlatHexahedra = 0;
   vtkIdType NumberOfOtherCells = 0;
   vtkIdType NumberOfQuadraticCells = 0;
+  vtkIdType NumberOfHigherOrderCells = 0;
   vtkIdType NumberOfCurvedCells = 0;
   double MaximumMidEdgeDeviation = 0;
   vtkIdType NumberOfLinearizedCells = 0;
   int RefinementLevels = 0;
+  int MinimumRefinementLevel = 0;
   vtkIdType NumberOfGridPoints = 0;
-  ppiray::RefinedTetrahedra Refinement;           // of curved quadratic tetrahedra
-  std::vector<vtkIdType> RefinedNodes;            // 10 per refined cell
-  std::vector<vtkIdType> PieceCell;               // per cell: its refined cell (-1: not a piece)
-  std::vector<ppiray::PieceCorners> PieceCorners; // per cell, renumbered with its corners
+  ppiray::HigherOrderPieces Refinement;
+  std::vector<vtkIdType> RefinedPointOffsets; // per refined cell: its range in RefinedPointIds
+  std::vector<vtkIdType> RefinedPointIds;     // its points, corners first
+  std::vector<unsigned char> RefinedCorners;  // per refined cell: its number of corners
+  std::vector<vtkIdType> PieceCell;           // per cell: its refined cell (-1: not a piece)
 
 private:
   ppiray::StageTimes Stages; // of the last BuildGeometry()

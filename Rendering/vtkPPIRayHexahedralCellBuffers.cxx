@@ -161,18 +161,18 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
   {
     vtkWarningWithObjectMacro(reporter,
       << hexes.GetNumberOfQuadraticCells()
-      << " quadratic (or higher-order) cells are rendered through their linear corners only.");
+      << " quadratic tetrahedra have a mid-edge node so far off its edge that the cell may fold: "
+         "rendered through their linear corners.");
   }
-  if (hexes.GetNumberOfCurvedCells() > 0)
+  const double deviation = hexes.GetMaximumMidEdgeDeviation();
+  const int levels = hexes.GetRefinementLevels();
+  if (deviation / std::pow(4.0, levels) > hexes.CurvedEdgeTolerance())
   {
-    const int levels = hexes.GetRefinementLevels();
-    vtkWarningWithObjectMacro(
-      reporter, << hexes.GetNumberOfCurvedCells()
-                << " quadratic tetrahedra have curved edges (a mid-edge node up to "
-                << hexes.GetMaximumMidEdgeDeviation() << " of its edge's length off the midpoint): "
-                << (levels > 0 ? "every quadratic tetrahedron refined " : "") << levels
-                << " levels, rendered with straight edges within "
-                << hexes.GetMaximumMidEdgeDeviation() / std::pow(4.0, levels) << " of an edge.");
+    vtkWarningWithObjectMacro(reporter,
+      << "Curved higher-order cells (a mid-edge node up to " << deviation
+      << " of its edge's length off the midpoint) refined " << levels
+      << " levels, as many as the piece limit allows: rendered with straight edges within "
+      << deviation / std::pow(4.0, levels) << " of an edge.");
   }
   if (hexes.GetNumberOfNonManifoldFaces() > 0)
   {
@@ -191,8 +191,8 @@ void vtkPPIRayHexahedralCellBuffers::ReportField(vtkObject* reporter) const
   {
     vtkWarningWithObjectMacro(
       reporter, << this->Cells->GetNumberOfLinearizedCells()
-                << " quadratic tetrahedra have a NaN scalar at a mid-edge node (none at a corner): "
-                   "rendered linear, through their corners.");
+                << " quadratic or higher-order cells have a NaN scalar at a node other than a "
+                   "corner (none at a corner): rendered through their corners.");
   }
 }
 

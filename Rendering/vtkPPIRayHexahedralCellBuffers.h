@@ -36,6 +36,8 @@ public:
   double GetMaximumSegmentLength() const override { return this->Cells->GetMaximumCellDiameter(); }
   double GetBoundingRadius() const override { return 0.5 * this->Cells->GetLength(); }
   void PlaneSection(const glm::dvec4& plane, std::vector<float>& vertices) const override;
+  /** vtkHexahedralCellTextures::SetMinimumRefinementLevel() of the next build. */
+  void SetSubdivisionLevel(int level) { this->Cells->SetMinimumRefinementLevel(level); }
   /** Cells of a kind (ppiray::LinearCellKind) in the last geometry built. */
   vtkIdType GetNumberOfCellsOfKind(int kind) const
   {

@@ -7,15 +7,15 @@
 #include "vtkUnstructuredGrid.h"
 
 //------------------------------------------------------------------------------
-vtkPPIRayMeshCells::Status vtkPPIRayMeshCells::Update(vtkUnstructuredGridBase* input, bool native,
-  int layout, vtkPPIRayGridInput& grid, vtkWindow* window, vtkObject* reporter)
+vtkPPIRayMeshCells::Status vtkPPIRayMeshCells::Update(vtkUnstructuredGridBase* input,
+  const Modes& modes, vtkPPIRayGridInput& grid, vtkWindow* window, vtkObject* reporter)
 {
   this->Stages.Clear();
   this->Rebuilt = false;
   ppiray::StageTimes::Laps laps(this->Stages);
   const ppiray::GridGeometryKey::Match match = this->Key.Update(input);
   laps.End("geometry key");
-  const bool sameModes = this->BuiltNative == native && this->BuiltLayout == layout;
+  const bool sameModes = this->Built == modes;
   if (match != ppiray::GridGeometryKey::Match::Changed && sameModes)
   {
     if (this->Input != input || match == ppiray::GridGeometryKey::Match::SameContent)
@@ -28,8 +28,7 @@ vtkPPIRayMeshCells::Status vtkPPIRayMeshCells::Update(vtkUnstructuredGridBase* i
   this->Input = input;
   this->Rebuilt = true;
   ppiray::ReportProgress(reporter, 0.0);
-  this->BuiltNative = native;
-  this->BuiltLayout = layout;
+  this->Built = modes;
   this->Time.Modified();
   this->Valid = false;
   vtkUnstructuredGrid* valid = grid.Validated(input, reporter);
@@ -46,11 +45,12 @@ vtkPPIRayMeshCells::Status vtkPPIRayMeshCells::Update(vtkUnstructuredGridBase* i
     ppiray::CellsProgress[0], ppiray::CellsProgress[1]);
   const ppiray::ProgressForwarding tetrahedraProgress(this->Tetrahedra.GetGeometryBuilder(),
     reporter, ppiray::CellsProgress[0], ppiray::CellsProgress[1]);
-  Result result = native ? this->Native.BuildGeometry(valid, reporter) : Result::Declined;
+  this->Native.SetSubdivisionLevel(modes.SubdivisionLevel);
+  Result result = modes.Native ? this->Native.BuildGeometry(valid, reporter) : Result::Declined;
   if (result == Result::Declined)
   {
     buffers = &this->Tetrahedra;
-    this->Tetrahedra.SetLayout(layout == ppiray::TetrahedronCompact
+    this->Tetrahedra.SetLayout(modes.Layout == ppiray::TetrahedronCompact
                                  ? vtkTetrahedralCellTextures::COMPACT
                                  : vtkTetrahedralCellTextures::PLANES);
     result = this->Tetrahedra.BuildGeometry(valid, reporter);

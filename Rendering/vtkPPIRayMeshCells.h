@@ -35,12 +35,23 @@ public:
     Rebuilt, // built anew from the grid
     Failed   // nothing to render (reported)
   };
+  /** How the cells are built; a change rebuilds them. */
+  struct Modes
+  {
+    bool Native;          // natively where the mesh allows it
+    int Layout;           // else as tetrahedra in this layout (ppiray::TetrahedronLayout)
+    int SubdivisionLevel; // vtkHexahedralCellTextures::SetMinimumRefinementLevel()
+    bool operator==(const Modes& o) const
+    {
+      return this->Native == o.Native && this->Layout == o.Layout &&
+             this->SubdivisionLevel == o.SubdivisionLevel;
+    }
+  };
   /**
-   * The cells of `input` (validated by `grid`): natively when `native` and
-   * the mesh allows it, else as tetrahedra in `layout` (ppiray::TetrahedronLayout).
-   * The buffers no longer used release their GL objects in `window`.
+   * The cells of `input` (validated by `grid`) built in `modes`. The buffers
+   * no longer used release their GL objects in `window`.
    */
-  Status Update(vtkUnstructuredGridBase* input, bool native, int layout, vtkPPIRayGridInput& grid,
+  Status Update(vtkUnstructuredGridBase* input, const Modes& modes, vtkPPIRayGridInput& grid,
     vtkWindow* window, vtkObject* reporter);
 
   /** The buffers the mesh is rendered with (null before the first Update()). */
@@ -82,8 +93,7 @@ private:
   ppiray::StageTimes Stages;   // of the last Update()
   int ReuseCount = 0;
   vtkTimeStamp Time;
-  bool BuiltNative = false; // built with the native modes
-  int BuiltLayout = 0;      // the tetrahedron layout built
+  Modes Built = { false, 0, 0 }; // the modes built with
   bool Valid = false;
   bool Rebuilt = false; // by the last Update()
 };

@@ -227,8 +227,7 @@ void vtkUnstructuredGridGPURayCastMapper::CollectStatistics()
 //------------------------------------------------------------------------------
 void vtkUnstructuredGridGPURayCastMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
-  // Whichever window asks (a renderer the volume leaves, a window closing),
-  // the objects are deleted in their own context.
+  // Deleted in their own context, whichever window asks (or closes).
   this->Internals->ReleaseInTheirContext(window);
   this->CollectStatistics();
   this->Superclass::ReleaseGraphicsResources(window);
@@ -239,9 +238,9 @@ bool vtkUnstructuredGridGPURayCastMapper::UpdateCells(
   vtkUnstructuredGridBase* input, vtkOpenGLRenderWindow* context)
 {
   vtkInternals& in = *this->Internals;
-  const vtkPPIRayMeshCells::Status status =
-    in.Mesh.Update(input, this->HexahedronMode != HEXAHEDRON_SUBDIVIDE, this->TetrahedronLayout,
-      in.GridInput, context, this);
+  const vtkPPIRayMeshCells::Modes modes = { this->HexahedronMode != HEXAHEDRON_SUBDIVIDE,
+    this->TetrahedronLayout, this->NonlinearSubdivisionLevel };
+  const auto status = in.Mesh.Update(input, modes, in.GridInput, context, this);
   if (status != vtkPPIRayMeshCells::Status::Current)
   {
     in.Field.Invalidate(); // the field follows the cells
@@ -473,7 +472,8 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "IntegrationMode: " << this->GetIntegrationModeAsString() << "\n";
-  os << indent << "HexahedronMode: " << this->GetHexahedronModeAsString() << "\n";
+  os << indent << "HexahedronMode: " << this->GetHexahedronModeAsString()
+     << ", NonlinearSubdivisionLevel: " << this->NonlinearSubdivisionLevel << "\n";
   os << indent << "TetrahedronLayout: " << this->GetTetrahedronLayoutAsString() << "\n";
   os << indent << "EmbedIsoSurfaces: " << this->EmbedIsoSurfaces << "\n";
   os << indent << "AverageIPScalarRange: (" << this->AverageIPScalarRange[0] << ", "

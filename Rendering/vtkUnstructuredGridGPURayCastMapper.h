@@ -138,6 +138,18 @@ public:
   const char* GetHexahedronModeAsString();
   ///@}
 
+  ///@{
+  /**
+   * The fewest levels quadratic and higher-order cells other than ten-node
+   * tetrahedra are refined by (like ParaView's Nonlinear Subdivision Level;
+   * vtkHexahedralCellTextures::SetMinimumRefinementLevel(): each level cuts
+   * the interpolation error of a smooth field about eightfold and makes 8
+   * times the pieces). Default 1, at most 3.
+   */
+  vtkSetClampMacro(NonlinearSubdivisionLevel, int, 0, 3);
+  vtkGetMacro(NonlinearSubdivisionLevel, int);
+  ///@}
+
   /**
    * How tetrahedra (and the cells split into them) are laid out in GPU
    * memory; see Documentation/algorithms.md, "Cell layouts".
@@ -426,6 +438,7 @@ protected:
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
   int HexahedronMode = HEXAHEDRON_ACCURATE;
   int TetrahedronLayout = TETRAHEDRON_PLANES;
+  int NonlinearSubdivisionLevel = 1;
   vtkTypeBool EmbedIsoSurfaces = 0;
   double AverageIPScalarRange[2] = { VTK_FLOAT_MIN, VTK_FLOAT_MAX };
   int VectorMode = MAGNITUDE;

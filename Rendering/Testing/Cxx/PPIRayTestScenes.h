@@ -164,11 +164,8 @@ inline void FoldLayers(vtkUnstructuredGrid* grid)
   }
 }
 
-// Point scalars "s" = 0.5 x + 0.4 y + 0.4 z (0 to 1.3 over the unit cube):
-// linear in world coordinates, so every cell covering a point (overlapping
-// or folded cells) gives it the same value, and a trilinear (isoparametric)
-// cell reproduces it exactly.
-inline void WorldLinearField(vtkUnstructuredGrid* grid)
+// Point scalars "s" = f(x, y, z) at every point of `grid`.
+inline void PointField(vtkUnstructuredGrid* grid, const Field& f)
 {
   vtkNew<vtkDoubleArray> s;
   s->SetName("s");
@@ -176,9 +173,29 @@ inline void WorldLinearField(vtkUnstructuredGrid* grid)
   {
     double x[3];
     grid->GetPoint(i, x);
-    s->InsertNextValue(0.5 * x[0] + 0.4 * x[1] + 0.4 * x[2]);
+    s->InsertNextValue(f(x[0], x[1], x[2]));
   }
   grid->GetPointData()->SetScalars(s);
+}
+
+// Point scalars "s" = 0.5 x + 0.4 y + 0.4 z (0 to 1.3 over the unit cube):
+// linear in world coordinates, so every cell covering a point (overlapping
+// or folded cells) gives it the same value, and a trilinear (isoparametric)
+// cell reproduces it exactly.
+inline void WorldLinearField(vtkUnstructuredGrid* grid)
+{
+  PointField(grid, [](double x, double y, double z) { return 0.5 * x + 0.4 * y + 0.4 * z; });
+}
+
+// A smooth deformation of space: x + a (sin 4y, cos 4z, sin 4x), one-to-one
+// for a < 1/4.
+inline void Deform(double a, double x[3])
+{
+  const double d[3] = { std::sin(4 * x[1]), std::cos(4 * x[2]), std::sin(4 * x[0]) };
+  for (int i = 0; i < 3; ++i)
+  {
+    x[i] += a * d[i];
+  }
 }
 
 // A smooth field on [0, 1]^3-ish coordinates.

@@ -14,7 +14,7 @@
 //  4. a NaN at one mid-edge node: the cells around that edge through their
 //     corners (counted, warned), no NaN, the reference applying the same rule;
 //  5. curved edges (mid-edge nodes moved off the midpoints by up to 3 % of an
-//     edge): refined (ppirayCurvedTetrahedra.h) into pieces rendered with
+//     edge): refined (ppirayHigherOrderPieces.h) into pieces rendered with
 //     straight edges (warned), against VTK's curved cells: the pieces'
 //     geometric error within the bounds below; 6. with the NaN of 4.;
 //  7. curved, with cell data.
@@ -44,7 +44,7 @@
 namespace
 {
 constexpr int Size = 200;
-using Field = std::function<double(double, double, double)>;
+using Field = ppiray_test::Field;
 
 int Fail(const char* what)
 {
@@ -92,17 +92,6 @@ int CheckFramePolynomial()
   return worst < 1e-12 ? 0 : Fail("the frame polynomial is not VTK's quadratic field");
 }
 
-// A smooth deformation of space: x + a (sin 4y, cos 4z, sin 4x), one-to-one
-// for a < 1/4.
-void Deform(double a, double x[3])
-{
-  const double d[3] = { std::sin(4 * x[1]), std::cos(4 * x[2]), std::sin(4 * x[0]) };
-  for (int i = 0; i < 3; ++i)
-  {
-    x[i] += a * d[i];
-  }
-}
-
 // The block's linear tetrahedra made quadratic: one mid-edge node per edge
 // (shared) at its midpoint, then every node moved by Deform(bend) (0:
 // straight edges; else the cells are curved, as a mesh of curved geometry
@@ -147,19 +136,11 @@ vtkSmartPointer<vtkUnstructuredGrid> Quadratic(
   {
     double x[3];
     points->GetPoint(p, x);
-    Deform(bend, x);
+    ppiray_test::Deform(bend, x);
     points->SetPoint(p, x);
   }
   grid->SetPoints(points);
-  vtkNew<vtkDoubleArray> values;
-  values->SetName("s");
-  for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
-  {
-    double x[3];
-    points->GetPoint(p, x);
-    values->InsertNextValue(f(x[0], x[1], x[2]));
-  }
-  grid->GetPointData()->SetScalars(values);
+  ppiray_test::PointField(grid, f);
   return grid;
 }
 
