@@ -1,6 +1,6 @@
 #include "vtkPPIRayVolumeRepresentation.h"
 
-#include "ppirayQuadraticTetrahedra.h"
+#include "ppirayConformingTetrahedra.h"
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkAppendFilter.h"
@@ -52,10 +52,11 @@ bool HasHiddenCells(vtkUnstructuredGrid* grid)
 }
 
 // Whether every cell of `data` is a hexahedron or a voxel (`mixed` false), or
-// one of the 3D cells the mapper renders itself: tetrahedra (linear or
-// ten-node), hexahedra, voxels, wedges and pyramids, split conformingly by
-// the mapper where it does not render them natively (`mixed` true). Linear
-// tetrahedra alone keep ParaView's usual path, unless some are hidden.
+// one of the 3D cells the mapper renders itself: tetrahedra, hexahedra,
+// voxels, wedges and pyramids, linear, quadratic or of higher order, split
+// conformingly by the mapper where it does not render them natively (`mixed`
+// true). Linear tetrahedra alone keep ParaView's usual path, unless some
+// are hidden.
 bool RenderedUnsplit(vtkDataSet* data, bool mixed)
 {
   if (vtkStructuredGrid::SafeDownCast(data) || vtkImageData::SafeDownCast(data) ||
@@ -74,12 +75,9 @@ bool RenderedUnsplit(vtkDataSet* data, bool mixed)
     const int type = grid->GetCellType(c);
     tetrahedraOnly = tetrahedraOnly && type == VTK_TETRA;
     const bool hexahedral = type == VTK_HEXAHEDRON || type == VTK_VOXEL;
-    // Ten-node tetrahedra carry their quadratic field to the mapper
+    // Higher-order cells carry their field to the mapper
     // (vtkDataSetTriangleFilter would split them into linear tetrahedra).
-    const bool linear3D =
-      type == VTK_TETRA || type == VTK_WEDGE || type == VTK_PYRAMID ||
-      ppiray::quadratic_tetrahedron::IsQuadraticTetrahedron(type, grid->GetCellSize(c));
-    if (!hexahedral && !(mixed && linear3D))
+    if (!hexahedral && !(mixed && ppiray::LinearShapeOf(type).Type != 0))
     {
       return false;
     }
@@ -259,6 +257,12 @@ void vtkPPIRayVolumeRepresentation::SetShade(int shade)
 }
 
 //------------------------------------------------------------------------------
+void vtkPPIRayVolumeRepresentation::SetNonlinearSubdivisionLevel(int level)
+{
+  this->Mapper->SetNonlinearSubdivisionLevel(level);
+}
+
+//------------------------------------------------------------------------------
 void vtkPPIRayVolumeRepresentation::SetHexahedronMode(int mode)
 {
   if (mode != this->Mapper->GetHexahedronMode())
@@ -275,12 +279,12 @@ int vtkPPIRayVolumeRepresentation::RequestData(
   // The cells reach the mapper as they are, in one process and on each rank
   // in parallel (the view then redistributes whole cells for ordered
   // compositing): hexahedra when the mapper renders them natively, and
-  // meshes of tetrahedra (linear or ten-node), hexahedra, wedges and
-  // pyramids in any mode (the mapper's conforming split, with shared
+  // meshes of tetrahedra, hexahedra, wedges and pyramids (linear, quadratic
+  // or of higher order) in any mode (the mapper's conforming split, with shared
   // diagonals, instead of vtkDataSetTriangleFilter's, which leaves
   // zero-volume and non-manifold tetrahedra on real FE meshes and can take
-  // minutes on their non-planar faces, and splits ten-node tetrahedra into
-  // linear ones).
+  // minutes on their non-planar faces, and splits higher-order cells into
+  // linear tetrahedra).
   this->PassesCellsUnsplit = false;
   vtkDataObject* input = inputVector[0]->GetNumberOfInformationObjects() == 1
                            ? vtkDataObject::GetData(inputVector[0], 0)

@@ -81,6 +81,8 @@ public:
   void SetShade(int shade);
   // Also decides whether hexahedral data bypasses the tetrahedralization.
   void SetHexahedronMode(int mode);
+  // The fewest levels higher-order cells are refined by.
+  void SetNonlinearSubdivisionLevel(int level);
   ///@}
 
   /** The mapper (for its counters, GPU memory size and peel count). */

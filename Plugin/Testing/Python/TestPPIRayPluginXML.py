@@ -26,6 +26,7 @@ from paraview.simple import Hide, Render, Show, Tetrahedralize, Transform, Wavel
 NEW_VALUES = {
     "IntegrationMode": ("Exact Linear", 1, "GetIntegrationMode"),
     "HexahedronMode": ("Fast", 1, "GetHexahedronMode"),
+    "PPIRayNonlinearSubdivisionLevel": (2, 2, "GetNonlinearSubdivisionLevel"),
     "MaximumNumberOfPeels": (7, 7, "GetMaximumNumberOfPeels"),
     "NonConvexMode": ("Automatic", 2, "GetNonConvexMode"),
     "TetrahedronLayout": ("Compact", 1, "GetTetrahedronLayout"),
