@@ -11,6 +11,8 @@ no polynomial at the nodes; ppiray_scene's view and transfer function.
 
 Usage: Module/run python Documentation/datasets/higher_order_bench.py
        [--cubes 6] [--size 256] [--frames 3] [--bend 0] [--only hex20,...]
+       (--only also takes hex24, wedge12, wedge18, lagrange-hex2,
+       lagrange-wedge2, bezier-hex2, bezier-wedge2)
 """
 import argparse
 import math
@@ -21,11 +23,28 @@ import time
 import numpy as np
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdList, vtkPoints
 from vtkmodules.vtkCommonDataModel import (
+    VTK_BEZIER_HEXAHEDRON,
+    VTK_BEZIER_WEDGE,
+    VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON,
+    VTK_BIQUADRATIC_QUADRATIC_WEDGE,
+    VTK_HEXAHEDRON,
+    VTK_LAGRANGE_HEXAHEDRON,
+    VTK_LAGRANGE_WEDGE,
+    VTK_PYRAMID,
     VTK_QUADRATIC_HEXAHEDRON,
+    VTK_QUADRATIC_LINEAR_WEDGE,
     VTK_QUADRATIC_PYRAMID,
     VTK_QUADRATIC_WEDGE,
     VTK_TRIQUADRATIC_HEXAHEDRON,
+    VTK_WEDGE,
+    vtkBezierHexahedron,
+    vtkBezierWedge,
+    vtkBiQuadraticQuadraticHexahedron,
+    vtkBiQuadraticQuadraticWedge,
+    vtkLagrangeHexahedron,
+    vtkLagrangeWedge,
     vtkQuadraticHexahedron,
+    vtkQuadraticLinearWedge,
     vtkQuadraticPyramid,
     vtkQuadraticWedge,
     vtkTriQuadraticHexahedron,
@@ -47,23 +66,53 @@ from ppiray_scene import (  # noqa: E402
     window_rgb,
 )
 
+
+
+def prototype(cls, count):
+    """A Lagrange or Bezier cell class's cell of `count` nodes (order from the count)."""
+    def make():
+        cell = cls()
+        cell.GetPointIds().SetNumberOfIds(count)
+        cell.GetPoints().SetNumberOfPoints(count)
+        cell.SetUniformOrderFromNumPoints(count)
+        return cell
+    return make
+
+
+# key: (label, cell type, a cell of it, the linear shape filling the cubes)
 KINDS = {
-    "hex20": ("20-node hexahedra", VTK_QUADRATIC_HEXAHEDRON, vtkQuadraticHexahedron),
-    "hex27": ("27-node hexahedra", VTK_TRIQUADRATIC_HEXAHEDRON, vtkTriQuadraticHexahedron),
-    "wedge15": ("15-node wedges", VTK_QUADRATIC_WEDGE, vtkQuadraticWedge),
-    "pyramid13": ("13-node pyramids", VTK_QUADRATIC_PYRAMID, vtkQuadraticPyramid),
+    "hex20": ("20-node hexahedra", VTK_QUADRATIC_HEXAHEDRON, vtkQuadraticHexahedron,
+              VTK_HEXAHEDRON),
+    "hex27": ("27-node hexahedra", VTK_TRIQUADRATIC_HEXAHEDRON, vtkTriQuadraticHexahedron,
+              VTK_HEXAHEDRON),
+    "wedge15": ("15-node wedges", VTK_QUADRATIC_WEDGE, vtkQuadraticWedge, VTK_WEDGE),
+    "pyramid13": ("13-node pyramids", VTK_QUADRATIC_PYRAMID, vtkQuadraticPyramid, VTK_PYRAMID),
+    "hex24": ("24-node hexahedra", VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON,
+              vtkBiQuadraticQuadraticHexahedron, VTK_HEXAHEDRON),
+    "wedge12": ("12-node wedges", VTK_QUADRATIC_LINEAR_WEDGE, vtkQuadraticLinearWedge, VTK_WEDGE),
+    "wedge18": ("18-node wedges", VTK_BIQUADRATIC_QUADRATIC_WEDGE, vtkBiQuadraticQuadraticWedge,
+                VTK_WEDGE),
+    "lagrange-hex2": ("Lagrange hexahedra, order 2", VTK_LAGRANGE_HEXAHEDRON,
+                      prototype(vtkLagrangeHexahedron, 27), VTK_HEXAHEDRON),
+    "lagrange-wedge2": ("Lagrange wedges, order 2", VTK_LAGRANGE_WEDGE,
+                        prototype(vtkLagrangeWedge, 18), VTK_WEDGE),
+    "bezier-hex2": ("Bezier hexahedra, order 2", VTK_BEZIER_HEXAHEDRON,
+                    prototype(vtkBezierHexahedron, 27), VTK_HEXAHEDRON),
+    "bezier-wedge2": ("Bezier wedges, order 2", VTK_BEZIER_WEDGE, prototype(vtkBezierWedge, 18),
+                      VTK_WEDGE),
 }
+DEFAULT_KINDS = "hex20,hex27,wedge15,pyramid13"
 # Pyramid bases: each face of the cube wound so that the centre lies above it.
 FACES = [((0, 0, 0), (0, 1, 0), (1, 1, 0), (1, 0, 0)), ((0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)),
          ((0, 0, 0), (1, 0, 0), (1, 0, 1), (0, 0, 1)), ((0, 1, 0), (0, 1, 1), (1, 1, 1), (1, 1, 0)),
          ((0, 0, 0), (0, 0, 1), (0, 1, 1), (0, 1, 0)), ((1, 0, 0), (1, 1, 0), (1, 1, 1), (1, 0, 1))]
 
 
-def cube_maps(type_):
+def cube_maps(shape):
     """Maps of a cell's parametric coordinates into the unit cube."""
-    if type_ == VTK_QUADRATIC_WEDGE:
+    if shape == VTK_WEDGE:
         return [lambda p: p, lambda p: (1 - p[0], 1 - p[1], p[2])]
-    if type_ == VTK_QUADRATIC_PYRAMID:
+    if shape == VTK_PYRAMID:
         def pyramid(face):
             def map_(p):
                 r, s, t = p
@@ -75,7 +124,7 @@ def cube_maps(type_):
     return [lambda p: p]
 
 
-def block(type_, cell_class, cubes, bend):
+def block(type_, cell_class, shape, cubes, bend):
     cell = cell_class()
     n = cell.GetNumberOfPoints()
     pcoords = cell.GetParametricCoords()
@@ -87,7 +136,7 @@ def block(type_, cell_class, cubes, bend):
     for k in range(cubes):
         for j in range(cubes):
             for i in range(cubes):
-                for map_ in cube_maps(type_):
+                for map_ in cube_maps(shape):
                     idlist = vtkIdList()
                     for p in nodes:
                         x = [(c + u) / cubes for c, u in zip((i, j, k), map_(p))]
@@ -158,13 +207,13 @@ def main():
     parser.add_argument("--size", type=int, default=256)
     parser.add_argument("--frames", type=int, default=3)
     parser.add_argument("--bend", type=float, default=0.0)
-    parser.add_argument("--only", default=",".join(KINDS))
+    parser.add_argument("--only", default=DEFAULT_KINDS, help="of: " + ", ".join(KINDS))
     args = parser.parse_args()
     print("| kind | rendering | first frame ms | steady ms | GPU bytes per cell | p99 | max |")
     print("|---|---|---:|---:|---:|---:|---:|")
     for key in args.only.split(","):
-        label, type_, cell_class = KINDS[key]
-        grid = block(type_, cell_class, args.cubes, args.bend)
+        label, type_, cell_class, shape = KINDS[key]
+        grid = block(type_, cell_class, shape, args.cubes, args.bend)
         prop = volume_property(grid)
         camera = vtkCamera()
         rows = measure(grid, prop, args.size, args.frames, camera)

@@ -10,11 +10,11 @@
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -138,52 +138,29 @@ void FaceCrossings(
   }
 }
 
-// dN_i/dp_k of `cell` at pcoords into derivs[k n + i] (n nodes). VTK's
-// InterpolateDerivs writes that layout for most cells but derivs[dim i + k]
-// for Lagrange and Bezier ones (vtkHigherOrderInterpolation's
-// Tensor3ShapeDerivatives); which one a cell type writes is decided once,
-// against finite differences of its InterpolateFunctions.
+// dN_i/dp_k of `cell` at pcoords into derivs[k n + i] (n nodes, k < the
+// cell's dimension), by central differences of InterpolateFunctions with
+// step 1e-5 (error about 1e-10: Newton's fixed point is the functions' own,
+// the derivatives only steer it). VTK's InterpolateDerivs is not used: its
+// layout differs between cells (node by node for Lagrange and Bezier cells,
+// vtkHigherOrderInterpolation) and vtkBezierWedge's crashes in VTK 9.2.
 void ShapeDerivatives(vtkCell* cell, const double pcoords[3], std::vector<double>& derivs)
 {
-  static std::atomic<signed char> interleaved[VTK_NUMBER_OF_CELL_TYPES] = {};
   const int n = static_cast<int>(cell->GetNumberOfPoints());
-  const int dim = cell->GetCellDimension(), type = cell->GetCellType();
+  const int dim = cell->GetCellDimension();
+  const double h = 1e-5;
   derivs.resize(dim * n);
-  cell->InterpolateDerivs(const_cast<double*>(pcoords), derivs.data());
-  if (type < 0 || type >= VTK_NUMBER_OF_CELL_TYPES)
+  std::vector<double> plus(n), minus(n);
+  for (int k = 0; k < dim; ++k)
   {
-    return;
-  }
-  if (interleaved[type] == 0)
-  {
-    const double p0[3] = { 0.21, 0.17, 0.13 }, h = 1e-6;
-    std::vector<double> d(dim * n), w0(n), w1(n);
-    cell->InterpolateDerivs(const_cast<double*>(p0), d.data());
-    cell->InterpolateFunctions(const_cast<double*>(p0), w0.data());
-    double blocked = 0, byNode = 0;
-    for (int k = 0; k < dim; ++k)
-    {
-      double p1[3] = { p0[0], p0[1], p0[2] };
-      p1[k] += h;
-      cell->InterpolateFunctions(p1, w1.data());
-      for (int i = 0; i < n; ++i)
-      {
-        const double fd = (w1[i] - w0[i]) / h;
-        blocked += std::abs(d[k * n + i] - fd);
-        byNode += std::abs(d[dim * i + k] - fd);
-      }
-    }
-    interleaved[type] = byNode < blocked ? 1 : -1;
-  }
-  if (interleaved[type] > 0)
-  {
-    const std::vector<double> byNode(derivs);
+    double p[3] = { pcoords[0], pcoords[1], pcoords[2] };
+    p[k] = pcoords[k] + h;
+    cell->InterpolateFunctions(p, plus.data());
+    p[k] = pcoords[k] - h;
+    cell->InterpolateFunctions(p, minus.data());
     for (int i = 0; i < n; ++i)
     {
-      for (int k = 0; k < dim; ++k)
-      {
-        derivs[k * n + i] = byNode[dim * i + k];
-      }
+      derivs[k * n + i] = (plus[i] - minus[i]) / (2 * h);
     }
   }
 }
@@ -428,6 +405,10 @@ bool RefineParametricCoordinates(vtkCell* cell, const std::vector<Vec3>& nodes, 
   const auto converged = [](const Vec3& step) {
     return !(std::max({ std::abs(step[0]), std::abs(step[1]), std::abs(step[2]) }) > 1e-14);
   };
+  // Far outside the parametric cell (or NaN): diverging, x is not in the
+  // cell (and some cells' functions fail there: vtkBezierWedge 9.2).
+  const auto far = [](const double p[3])
+  { return !(std::abs(p[0] - 0.5) < 4 && std::abs(p[1] - 0.5) < 4 && std::abs(p[2] - 0.5) < 4); };
   if (chord)
   {
     double p[3] = { pcoords[0], pcoords[1], pcoords[2] },
@@ -450,6 +431,10 @@ bool RefineParametricCoordinates(vtkCell* cell, const std::vector<Vec3>& nodes, 
       {
         p[k] -= step[k];
       }
+      if (far(p))
+      {
+        break;
+      }
     }
   }
   for (int iteration = 0; iteration < 8; ++iteration)
@@ -461,9 +446,15 @@ bool RefineParametricCoordinates(vtkCell* cell, const std::vector<Vec3>& nodes, 
       break;
     }
     const Vec3 step = inverse * r;
+    const double before[3] = { pcoords[0], pcoords[1], pcoords[2] };
     for (int k = 0; k < 3; ++k)
     {
       pcoords[k] -= step[k];
+    }
+    if (far(pcoords))
+    {
+      std::copy_n(before, 3, pcoords);
+      break;
     }
     if (converged(step))
     {
@@ -472,6 +463,62 @@ bool RefineParametricCoordinates(vtkCell* cell, const std::vector<Vec3>& nodes, 
   }
   cell->InterpolateFunctions(pcoords, weights);
   return false;
+}
+
+//------------------------------------------------------------------------------
+bool InParametricDomain(int linearType, const double p[3])
+{
+  const double eps = 1e-9, r = p[0], s = p[1], t = p[2];
+  const bool unitCube =
+    r >= -eps && s >= -eps && t >= -eps && r <= 1 + eps && s <= 1 + eps && t <= 1 + eps;
+  switch (linearType)
+  {
+    case VTK_TETRA:
+      return r >= -eps && s >= -eps && t >= -eps && r + s + t <= 1 + eps;
+    case VTK_WEDGE:
+      return unitCube && r + s <= 1 + eps;
+    default: // hexahedra; VTK's pyramid spans the unit cube too (collapsed at t = 1)
+      return unitCube;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool MapsTo(const std::vector<Vec3>& nodes, const double* weights, const double x[3])
+{
+  // |sum_i w_i X_i - x| within 1e-9 of the nodes' extent.
+  Vec3 mapped(0.0), lo(nodes[0]), hi(nodes[0]);
+  for (size_t i = 0; i < nodes.size(); ++i)
+  {
+    mapped += weights[i] * nodes[i];
+    lo = glm::min(lo, nodes[i]);
+    hi = glm::max(hi, nodes[i]);
+  }
+  const Vec3 miss = mapped - Vec3(x[0], x[1], x[2]);
+  return glm::length(miss) <= 1e-9 * glm::length(hi - lo);
+}
+
+//------------------------------------------------------------------------------
+int LocateInNonlinearCell(vtkCell* cell, const std::vector<Vec3>& nodes, int linearType,
+  const double x[3], double pcoords[3], double* weights, std::vector<double>& derivs)
+{
+  // Newton from the parametric centre; from VTK's EvaluatePosition where
+  // that does not reach x. Inside where the map reaches x from the
+  // parametric domain: VTK's own answer is wrong for some cells
+  // (vtkLagrangeWedge 9.2 leaves r + s <= 1 unchecked in EvaluatePosition
+  // and GetParametricDistance).
+  cell->GetParametricCenter(pcoords);
+  RefineParametricCoordinates(cell, nodes, x, pcoords, weights, derivs);
+  if (!MapsTo(nodes, weights, x))
+  {
+    int subId;
+    double dist2;
+    if (cell->EvaluatePosition(x, nullptr, subId, pcoords, dist2, weights) == -1)
+    {
+      return 0;
+    }
+    RefineParametricCoordinates(cell, nodes, x, pcoords, weights, derivs);
+  }
+  return MapsTo(nodes, weights, x) && InParametricDomain(linearType, pcoords) ? 1 : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -610,15 +657,15 @@ void GeneralCellSegments(vtkIdType id, vtkGenericCell* cell, vtkDataArray* scala
       chordWorks = RefineParametricCoordinates(
         cell, nodes, x, pcoords, weights.data(), derivs, hasChord && chordWorks ? &chord : nullptr);
     }
+    else if (nonlinear)
+    {
+      found = LocateInNonlinearCell(cell, nodes, cornerType, x, pcoords, weights.data(), derivs);
+      std::copy_n(pcoords, 3, midpoint);
+      hasChord = InverseJacobian(cell, nodes, midpoint, derivs, chord);
+    }
     else
     {
       found = cell->EvaluatePosition(x, nullptr, subId, pcoords, dist2, weights.data());
-      if (nonlinear && found != -1)
-      {
-        RefineParametricCoordinates(cell, nodes, x, pcoords, weights.data(), derivs);
-        std::copy_n(pcoords, 3, midpoint);
-        hasChord = InverseJacobian(cell, nodes, midpoint, derivs, chord);
-      }
     }
     if (linear)
     {

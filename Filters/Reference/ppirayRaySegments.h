@@ -77,6 +77,19 @@ bool RefineParametricCoordinates(vtkCell* cell, const std::vector<glm::dvec3>& n
 bool InverseJacobian(vtkCell* cell, const std::vector<glm::dvec3>& nodes, const double pcoords[3],
   std::vector<double>& derivs, glm::dmat3& inverse);
 
+// Whether parametric coordinates p lie in the parametric cell of a cell whose
+// corners form `linearType` (CornerCellType(); the unit cube for 0).
+bool InParametricDomain(int linearType, const double p[3]);
+
+// Whether the map sum_i weights_i nodes_i reaches x (within 1e-9 of the
+// nodes' extent).
+bool MapsTo(const std::vector<glm::dvec3>& nodes, const double* weights, const double x[3]);
+
+// Where x lies in a nonlinear cell (its points `nodes`, its corners'
+// `linearType`): pcoords and the weights there, 1 inside, 0 outside.
+int LocateInNonlinearCell(vtkCell* cell, const std::vector<glm::dvec3>& nodes, int linearType,
+  const double x[3], double pcoords[3], double* weights, std::vector<double>& derivs);
+
 // The linear type of a quadratic or higher-order cell's corners (its first
 // `corners` points; 0 and 0 for other cells).
 int CornerCellType(int type, int& corners);

@@ -103,11 +103,18 @@ Projection ProjectionOf(int blendMode, const double scalarRange[2], const double
 long long RenderTiles(vtkAlgorithm* self, const Scene& scene, float* rgba)
 {
   const int numberOfTiles = scene.Tiles.TilesX * scene.Tiles.TilesY;
+  // VTK's Bezier wedge shares state between its instances (VTK 9.2:
+  // InterpolateFunctions fails from two threads): one thread for a grid with any.
+  bool parallel = true;
+  for (vtkIdType c = 0; c < scene.Grid->GetNumberOfCells() && parallel; ++c)
+  {
+    parallel = scene.Grid->GetCellType(c) != VTK_BEZIER_WEDGE;
+  }
   std::atomic<int> tilesDone(0);
   std::atomic<long long> unresolvedPieces(0);
   const std::thread::id caller = std::this_thread::get_id();
   self->UpdateProgress(0.0);
-#pragma omp parallel for schedule(dynamic)
+#pragma omp parallel for schedule(dynamic) if (parallel)
   for (int tile = 0; tile < numberOfTiles; ++tile)
   {
     if (self->GetAbortExecute())
