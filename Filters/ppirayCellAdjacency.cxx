@@ -449,6 +449,30 @@ int SideOfFace(
 }
 
 //------------------------------------------------------------------------------
+vtkIdType NearestSolidCell(
+  vtkIdType cell, const vtkIdType* neighbors, int slots, const unsigned char* flat)
+{
+  std::vector<vtkIdType> queue = { cell };
+  for (size_t k = 0; k < queue.size() && k < 64; ++k)
+  {
+    for (int g = 0; g < slots; ++g)
+    {
+      const vtkIdType n = neighbors[slots * queue[k] + g];
+      if (n < 0 || std::find(queue.begin(), queue.end(), n) != queue.end())
+      {
+        continue;
+      }
+      if (!flat[n])
+      {
+        return n;
+      }
+      queue.push_back(n);
+    }
+  }
+  return -1;
+}
+
+//------------------------------------------------------------------------------
 double CellVolume6(const CellFaceTable& table, const vtkIdType* corners, const double* points)
 {
   auto at = [&](int v) { return points + 3 * corners[v]; };

@@ -147,6 +147,15 @@ PPIRAYFILTERS_EXPORT int SideOfFace(
   const CellFaceMesh& mesh, vtkIdType cell, int face, const vtkIdType* faceIds, int size);
 
 /**
+ * The first cell that is not flat reached from flat cell `cell` through
+ * neighbours (`slots` entries per cell, -1: none), breadth first over at most
+ * 64 cells (flat cells come in small clusters); -1: none. A boundary face of
+ * a flat cell is wound away from that cell (the cells it lies on).
+ */
+PPIRAYFILTERS_EXPORT vtkIdType NearestSolidCell(
+  vtkIdType cell, const vtkIdType* neighbors, int slots, const unsigned char* flat);
+
+/**
  * Six times the signed volume of a cell (`corners`: its point ids, `points`:
  * 3 doubles per point) by the divergence theorem: the sum of
  * det[a - p0, b - p0, c - p0] over its faces fanned from their first corner,

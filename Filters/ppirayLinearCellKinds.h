@@ -37,6 +37,9 @@ enum LinearCellKind
   NUMBER_OF_KINDS = 4
 };
 
+/** Added to a cell's kind where the cell is flat (zero volume). */
+constexpr int FLAT_KIND_BIT = 16;
+
 struct LinearCellKindInfo : CellFaceTable // corners, faces (outward; -1: no corner)
 {
   int VTKType;

@@ -150,11 +150,17 @@ int ListReentryFaces(const std::vector<float>& points, const std::vector<unsigne
       }
     }
   }
+  int listed = 0;
   for (const auto& face : across)
   {
+    if (neighbors[slotOf(face.first)] != -1)
+    {
+      continue; // linked already (a face partly covered by others: its list)
+    }
+    ++listed;
     neighbors[slotOf(face.first)] = reentryFace + static_cast<int>(neighbors.size() / 4);
     neighbors.insert(neighbors.end(), face.second.begin(), face.second.end());
   }
-  return static_cast<int>(across.size());
+  return listed;
 }
 }

@@ -40,7 +40,9 @@ PPIRAYFILTERS_EXPORT std::vector<int> ReflexEdgePartners(
  * 4 ints). Each boundary face with a reflex edge gets the neighbour code
  * `reentryFace` + i, `neighbors[slotOf(face)]`, where texel i, appended,
  * holds the faces across its edges (at most 4; -1 for none left). The faces
- * of one face's own triangles are not partners. Returns the faces listed.
+ * of one face's own triangles are not partners; a face linked already (its
+ * slot not -1: a list of faces across it) keeps its code. Returns the faces
+ * listed.
  */
 PPIRAYFILTERS_EXPORT int ListReentryFaces(const std::vector<float>& points,
   const std::vector<unsigned int>& triangles, const std::vector<int>& faceOf,

@@ -7,6 +7,7 @@
 #include "ppirayInvertedSheets.h"
 #include "ppirayLinearCellKinds.h"
 #include "ppirayMeshLocalFrame.h"
+#include "ppirayNonConformingFaces.h"
 #include "ppirayQuadraticTetrahedra.h"
 #include "ppirayReflexEdges.h"
 #include "vtkCellArray.h"
@@ -20,6 +21,7 @@
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridCellAdjacency.h"
 
 #include <algorithm>
 #include <array>
@@ -229,12 +231,12 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     return false; // only counted: a grid of tetrahedra only, or with other cells
   }
   this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
-  this->DropFlatCells();
   this->RefineHigherOrderCells(grid);
   if (this->GetNumberOfHexahedra() == 0)
   {
     return false;
   }
+  this->MarkFlatCells();
   laps.End("cells");
   this->Hidden = ppiray::HiddenCells(grid, this->CellIds);
   this->OrientCells();
@@ -243,6 +245,7 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   std::vector<vtkIdType> boundary = this->MatchFaces();
   laps.End(this->Adjacency.WasKept() ? "folds" : "adjacency");
   this->LinkSplitQuadrilaterals(boundary);
+  this->LinkNonConformingFaces(boundary);
   this->ExtractBoundary(boundary, static_cast<vtkIdType>(this->LocalPoints.size() / 3));
   laps.End("boundary");
   // Faces with reflex edges: the faces across them, for the march to enter
@@ -265,6 +268,7 @@ void vtkHexahedralCellTextures::Clear()
   this->Stages.Clear();
   this->CellIds.clear();
   this->Kinds.clear();
+  this->Flat.clear();
   this->CornerIds.clear();
   this->EdgeNodeIds.clear();
   this->Corners.clear();
@@ -280,6 +284,8 @@ void vtkHexahedralCellTextures::Clear()
   this->NumberOfFoldedFaces = 0;
   this->NumberOfSplitQuadrilaterals = 0;
   this->NumberOfReentryFaces = 0;
+  this->NumberOfNonConformingFaces = 0;
+  this->MaximumPiecesPerFace = 0;
   this->NumberOfSingularFrames = 0;
   this->NumberOfFlatHexahedra = 0;
   this->NumberOfOtherCells = 0;
@@ -514,42 +520,22 @@ std::vector<unsigned char> vtkHexahedralCellTextures::RefinedFields(
 }
 
 //------------------------------------------------------------------------------
-void vtkHexahedralCellTextures::DropFlatCells()
+void vtkHexahedralCellTextures::MarkFlatCells()
 {
-  // Zero-volume cells (a layer pinched out to nothing: top face on the bottom
-  // face) are left out, like zero-volume tetrahedra: they hold no volume, and
-  // the cells on either side share their points, so they meet face to face
-  // without them.
+  // Zero-volume cells (a layer pinched out to nothing: top face on the
+  // bottom face) are kept and crossed with zero length, like zero-volume
+  // tetrahedra: the cells on either side meet through them.
   const double* local = this->LocalPoints.data();
-  const vtkIdType count = static_cast<vtkIdType>(this->CellIds.size());
-  std::vector<unsigned char> flat(count);
-#pragma omp parallel for schedule(static)
+  const vtkIdType count = this->GetNumberOfHexahedra();
+  this->Flat.assign(count, 0);
+  vtkIdType flatCells = 0;
+#pragma omp parallel for schedule(static) reduction(+ : flatCells)
   for (vtkIdType h = 0; h < count; ++h)
   {
-    flat[h] = IsFlat(local, this->CornerIds.data() + 8 * h, this->Kinds[h]) ? 1 : 0;
+    this->Flat[h] = IsFlat(local, this->CornerIds.data() + 8 * h, this->Kinds[h]) ? 1 : 0;
+    flatCells += this->Flat[h];
   }
-  vtkIdType kept = 0;
-  for (vtkIdType h = 0; h < count; ++h)
-  {
-    const vtkIdType* c = this->CornerIds.data() + 8 * h;
-    if (flat[h])
-    {
-      ++this->NumberOfFlatHexahedra;
-      --this->NumberOfCellsOfKind[this->Kinds[h]];
-      continue;
-    }
-    std::copy(c, c + 8, this->CornerIds.data() + 8 * kept);
-    if (!this->EdgeNodeIds.empty())
-    {
-      std::copy_n(this->EdgeNodeIds.data() + 6 * h, 6, this->EdgeNodeIds.data() + 6 * kept);
-    }
-    this->CellIds[kept] = this->CellIds[h];
-    this->Kinds[kept++] = this->Kinds[h];
-  }
-  this->CellIds.resize(kept);
-  this->Kinds.resize(kept);
-  this->CornerIds.resize(8 * kept);
-  this->EdgeNodeIds.resize(this->EdgeNodeIds.empty() ? 0 : 6 * kept);
+  this->NumberOfFlatHexahedra = flatCells;
 }
 
 //------------------------------------------------------------------------------
@@ -565,6 +551,10 @@ void vtkHexahedralCellTextures::OrientCells()
   {
     vtkIdType* c = this->CornerIds.data() + 8 * h;
     const int kind = this->Kinds[h];
+    if (this->Flat[h])
+    {
+      continue; // no handedness, no frame: crossed with zero length
+    }
     if (Handedness(local, c, kind) < 0)
     {
       const int* mirror = ppiray::LinearCellKindOf(kind).Mirror;
@@ -637,9 +627,11 @@ void vtkHexahedralCellTextures::StoreCorners()
 //------------------------------------------------------------------------------
 ppiray::CellFaceMesh vtkHexahedralCellTextures::FaceMesh() const
 {
-  return ppiray::LinearCellFaceMesh(static_cast<vtkIdType>(this->LocalPoints.size() / 3),
-    this->LocalPoints.data(), this->CornerIds.data(), this->Kinds.data(),
-    this->GetNumberOfHexahedra());
+  ppiray::CellFaceMesh mesh = ppiray::LinearCellFaceMesh(
+    static_cast<vtkIdType>(this->LocalPoints.size() / 3), this->LocalPoints.data(),
+    this->CornerIds.data(), this->Kinds.data(), this->GetNumberOfHexahedra());
+  mesh.Flat = this->NumberOfFlatHexahedra > 0 ? this->Flat.data() : nullptr;
+  return mesh;
 }
 
 //------------------------------------------------------------------------------
@@ -683,7 +675,7 @@ std::vector<vtkIdType> vtkHexahedralCellTextures::MatchFaces()
       }
     }
     this->Neighbors[8 * h + 6] = mask;
-    this->Neighbors[8 * h + 7] = kind;
+    this->Neighbors[8 * h + 7] = kind | (this->Flat[h] ? ppiray::FLAT_KIND_BIT : 0);
   }
   std::vector<vtkIdType> boundary; // 6 h + f
   for (size_t k = 0; k < adjacency.BoundaryFaces.size(); k += 2)
@@ -770,11 +762,11 @@ void vtkHexahedralCellTextures::LinkSplitQuadrilaterals(std::vector<vtkIdType>& 
     {
       continue;
     }
-    // The list: (2, codes), padded to a whole texel.
-    this->Neighbors[8 * h + f] = SplitFace() + static_cast<int>(this->Neighbors.size() / 4);
-    this->Neighbors.insert(this->Neighbors.end(),
-      { 2, NeighborCode(pieces[0] / 6, static_cast<int>(pieces[0] % 6), false, false),
-        NeighborCode(pieces[1] / 6, static_cast<int>(pieces[1] % 6), false, false), -1 });
+    this->Neighbors[8 * h + f] = ppiray::AppendFaceList(this->Neighbors,
+      { NeighborCode(pieces[0] / 6, static_cast<int>(pieces[0] % 6), false, false),
+        NeighborCode(pieces[1] / 6, static_cast<int>(pieces[1] % 6), false, false) },
+      SplitFace());
+    this->MaximumPiecesPerFace = 2;
     for (vtkIdType piece : pieces)
     {
       this->Neighbors[8 * (piece / 6) + piece % 6] = NeighborCode(h, f, false, false);
@@ -786,6 +778,57 @@ void vtkHexahedralCellTextures::LinkSplitQuadrilaterals(std::vector<vtkIdType>& 
   boundary.erase(std::remove_if(boundary.begin(), boundary.end(),
                    [&](vtkIdType owner) { return linked[owner] != 0; }),
     boundary.end());
+}
+
+//------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::LinkNonConformingFaces(std::vector<vtkIdType>& boundary)
+{
+  // The open faces left (of cells with volume), as the march splits them,
+  // wound outward, linked to the open faces across them
+  // (ppirayNonConformingFaces.h); those covered are no boundary faces.
+  std::vector<ppiray::OpenFace> faces;
+  std::vector<vtkIdType> owners; // 6 h + f
+  for (vtkIdType owner : boundary)
+  {
+    const vtkIdType h = owner / 6;
+    const int f = static_cast<int>(owner % 6);
+    if (this->Flat[h])
+    {
+      continue;
+    }
+    const int kind = this->Kinds[h];
+    const bool second = (this->Neighbors[8 * h + 6] >> f) & 1;
+    ppiray::OpenFace face{ h, ppiray::FaceSize(kind, f) - 2, {} };
+    for (int t = 0; t < face.Triangles; ++t)
+    {
+      for (int v = 0; v < 3; ++v)
+      {
+        face.Points[3 * t + v] = this->CornerIds[8 * h + TriangleCorner(kind, f, t, v, second)];
+      }
+    }
+    faces.push_back(face);
+    owners.push_back(owner);
+  }
+  const ppiray::NonConformingLinks links = ppiray::LinkNonConformingFaces(
+    this->LocalPoints.data(), faces,
+    [&](vtkIdType i)
+    { return NeighborCode(owners[i] / 6, static_cast<int>(owners[i] % 6), false, false); },
+    [&](vtkIdType i) { return static_cast<size_t>(8 * (owners[i] / 6) + owners[i] % 6); },
+    SplitFace(), MaximumPieces(), this->Neighbors);
+  std::vector<vtkIdType> covered;
+  for (size_t i = 0; i < faces.size(); ++i)
+  {
+    if (links.Covered[i])
+    {
+      covered.push_back(owners[i]);
+    }
+  }
+  boundary.erase(
+    std::remove_if(boundary.begin(), boundary.end(),
+      [&](vtkIdType owner) { return std::binary_search(covered.begin(), covered.end(), owner); }),
+    boundary.end());
+  this->NumberOfNonConformingFaces = links.Faces;
+  this->MaximumPiecesPerFace = std::max(this->MaximumPiecesPerFace, links.MaximumPieces);
 }
 
 //------------------------------------------------------------------------------
@@ -802,11 +845,13 @@ void vtkHexahedralCellTextures::ExtractBoundary(
     const int f = static_cast<int>(owner % 6);
     const int kind = this->Kinds[h];
     const bool second = (this->Neighbors[8 * h + 6] >> f) & 1;
+    const bool reversed = this->Flat[h] && this->FacesSolidNeighbor(h, f);
     for (int t = 0; t < ppiray::FaceSize(kind, f) - 2; ++t)
     {
       for (int v = 0; v < 3; ++v)
       {
-        const vtkIdType id = this->CornerIds[8 * h + TriangleCorner(kind, f, t, v, second)];
+        const int w = reversed && v > 0 ? 3 - v : v;
+        const vtkIdType id = this->CornerIds[8 * h + TriangleCorner(kind, f, t, w, second)];
         if (pointMap[id] < 0)
         {
           pointMap[id] = static_cast<vtkIdType>(this->BoundaryPoints.size() / 3);
@@ -820,6 +865,38 @@ void vtkHexahedralCellTextures::ExtractBoundary(
       this->BoundaryFaces.push_back(static_cast<int>(12 * h + 2 * f + t));
     }
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkHexahedralCellTextures::FacesSolidNeighbor(vtkIdType h, int f) const
+{
+  // Face f's outward normal (as the kind winds it) against the centre of
+  // the first non-flat cell reached from h (ppiray::NearestSolidCell).
+  const ppiray::CellAdjacency& adjacency = this->Adjacency.Get();
+  const vtkIdType n = ppiray::NearestSolidCell(h, adjacency.Neighbors.data(), 6, this->Flat.data());
+  if (n < 0)
+  {
+    return false;
+  }
+  const double* local = this->LocalPoints.data();
+  const int corners = ppiray::LinearCellKindOf(this->Kinds[n]).Corners;
+  double centre[3] = { 0, 0, 0 };
+  for (int v = 0; v < corners; ++v)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      centre[k] += local[3 * this->CornerIds[8 * n + v] + k] / corners;
+    }
+  }
+  const int* q = ppiray::LinearCellKindOf(this->Kinds[h]).Face[f];
+  const vtkIdType* c = this->CornerIds.data() + 8 * h;
+  double volume6 = 0;
+  for (int t = 0; t + 2 < ppiray::FaceSize(this->Kinds[h], f); ++t)
+  {
+    volume6 += vtkUnstructuredGridCellAdjacency::SignedVolume6(
+      local + 3 * c[q[0]], local + 3 * c[q[t + 1]], local + 3 * c[q[t + 2]], centre);
+  }
+  return volume6 > 0;
 }
 
 //------------------------------------------------------------------------------
@@ -885,7 +962,8 @@ bool vtkHexahedralCellTextures::BuildField(vtkDataArray* scalars, bool cellScala
         hasNaN = hasNaN || std::isnan(s[i]);
       }
     }
-    if (hasNaN || (h < static_cast<vtkIdType>(this->Hidden.size()) && this->Hidden[h]))
+    if (hasNaN || (h < static_cast<vtkIdType>(this->Hidden.size()) && this->Hidden[h]) ||
+        this->Flat[h])
     {
       out[0] = TransparentCellOffset();
       const vtkIdType cell = this->PieceCell.empty() ? -1 : this->PieceCell[h];

@@ -40,7 +40,8 @@
  * "hexahedron" below is any of them: its kind, ppirayLinearCellKinds.h, is
  * stored with its neighbours; a kind with fewer than 8 corners repeats
  * corner 0 in the unused slots, and has fewer faces). Zero-volume ones
- * (pinched-out layers) are left out and counted (GetNumberOfFlatHexahedra()).
+ * (pinched-out layers) are kept, flagged with FLAT_KIND_BIT in their kind,
+ * and crossed with zero length (GetNumberOfFlatHexahedra()).
  * A grid with other cells, or of linear tetrahedra only, is only counted
  * (GetNumberOfOtherCells(); BuildGeometry() returns false and builds
  * nothing): the ray caster renders such meshes as tetrahedra. No OpenGL here.
@@ -102,6 +103,8 @@ public:
    * cells, its list at neighbour texel i: 2, then their codes.
    */
   static constexpr int SplitFace() { return 1 << 30; }
+  /** The most faces a list names (a face met by more is left open). */
+  static constexpr int MaximumPieces() { return 1024; }
   /**
    * ReentryFace() + i: a boundary face with a reflex edge
    * (ppirayReflexEdges.h), texel i holding the codes of the boundary faces
@@ -158,6 +161,14 @@ public:
   vtkGetMacro(NumberOfFoldedFaces, vtkIdType);
   /** Quadrilaterals met by two triangles of other cells (SplitFace()). */
   vtkGetMacro(NumberOfSplitQuadrilaterals, vtkIdType);
+  /**
+   * Open faces linked to the open faces of other cells that meet them
+   * geometrically, not by point ids (hanging nodes, T-junctions:
+   * ppirayNonConformingFaces.h), and the longest list of a face (these and
+   * the split quadrilaterals').
+   */
+  vtkGetMacro(NumberOfNonConformingFaces, vtkIdType);
+  vtkGetMacro(MaximumPiecesPerFace, int);
   /** Boundary faces with a reflex edge (ReentryFace()). */
   vtkGetMacro(NumberOfReentryFaces, vtkIdType);
   /** Input cells rendered empty for a NaN scalar (a refined cell counts once). */
@@ -170,7 +181,7 @@ public:
    * so that the best-shaped corner becomes corner 0.
    */
   vtkGetMacro(NumberOfSingularFrames, vtkIdType);
-  /** Zero-volume hexahedra left out (not in GetNumberOfHexahedra()). */
+  /** Zero-volume cells (in GetNumberOfHexahedra(): crossed with zero length). */
   vtkGetMacro(NumberOfFlatHexahedra, vtkIdType);
   vtkGetMacro(NumberOfOtherCells, vtkIdType);
   /**
@@ -253,7 +264,15 @@ protected:
   bool CollectCells(vtkUnstructuredGrid* grid); // false: not for these textures
   void AddEdgeNodes(const vtkIdType* mids);     // a collected cell's (nullptr: none)
   bool HasEdgeNodes(vtkIdType h) const;
-  void DropFlatCells();
+  void MarkFlatCells();
+  // Links the open faces left in `boundary` (6 h + f, sorted) to the open
+  // faces across them (ppiray::LinkNonConformingFaces); removes those
+  // covered.
+  void LinkNonConformingFaces(std::vector<vtkIdType>& boundary);
+  // Whether face f of flat cell h, wound as its kind winds it, faces the
+  // first non-flat cell reached from h: a boundary face of a flat cell is
+  // wound away from the cells it lies on.
+  bool FacesSolidNeighbor(vtkIdType h, int f) const;
   void OrientCells();
   void RefineHigherOrderCells(vtkUnstructuredGrid* grid);
   void ReplaceByPieces(const std::vector<vtkIdType>& refined);
@@ -278,6 +297,7 @@ protected:
   std::vector<unsigned char> Kinds;
   vtkIdType NumberOfCellsOfKind[4] = { 0, 0, 0, 0 };
   std::vector<unsigned char> Hidden; // ppirayHiddenCells.h
+  std::vector<unsigned char> Flat;   // zero volume
   std::vector<vtkIdType> CornerIds;
   std::vector<vtkIdType> EdgeNodeIds; // 6 per cell, renumbered with the corners (-1: none)
   std::vector<float> Corners;
@@ -296,6 +316,8 @@ protected:
   vtkIdType NumberOfNaNScalars = 0;
   vtkIdType NumberOfSingularFrames = 0;
   vtkIdType NumberOfFlatHexahedra = 0;
+  vtkIdType NumberOfNonConformingFaces = 0;
+  int MaximumPiecesPerFace = 0;
   vtkIdType NumberOfOtherCells = 0;
   vtkIdType NumberOfQuadraticCells = 0;
   vtkIdType NumberOfHigherOrderCells = 0;

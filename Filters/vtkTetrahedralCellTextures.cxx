@@ -1,9 +1,11 @@
 #include "vtkTetrahedralCellTextures.h"
 
 #include "ppirayBoundaryFaceLinks.h"
+#include "ppirayCellAdjacency.h"
 #include "ppirayConformingTetrahedra.h"
 #include "ppirayHiddenCells.h"
 #include "ppirayMeshLocalFrame.h"
+#include "ppirayNonConformingFaces.h"
 #include "ppirayReflexEdges.h"
 
 #include "vtkCellData.h"
@@ -83,6 +85,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->NumberOfLinkedFaces = this->NumberOfSplitFaces = this->NumberOfUnlinkedFaces = 0;
   this->MaximumPiecesPerFace = 0;
   this->NumberOfReentryFaces = 0;
+  this->NumberOfNonConformingFaces = 0;
   const vtkIdType numberOfTets = this->GetNumberOfTetrahedra();
   if (numberOfTets == 0 || !grid->GetPoints())
   {
@@ -212,7 +215,8 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   // Boundary triangles wound outward, over a compact set of points, but for
   // those joined to the imaginary cells on them.
   const std::vector<vtkIdType>& boundary = adjacency->GetBoundaryFaces();
-  const std::vector<unsigned char> linked = this->LinkBoundaryFaces(grid, boundary);
+  std::vector<unsigned char> linked = this->LinkBoundaryFaces(grid, boundary);
+  this->LinkNonConformingFaces(boundary, orientation, linked);
   std::vector<vtkIdType> pointMap(numberOfPoints, -1);
   for (size_t k = 0; k < boundary.size(); k += 2)
   {
@@ -225,8 +229,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
     int corner[3] = { vtkUnstructuredGridCellAdjacency::FaceVertex(f, 0),
       vtkUnstructuredGridCellAdjacency::FaceVertex(f, 1),
       vtkUnstructuredGridCellAdjacency::FaceVertex(f, 2) };
-    if (orientation[t] < 0 ||
-        (this->Degenerate[t] && this->FacesTowards(t, corner, neighbors, neighborFaces)))
+    if (orientation[t] < 0 || (this->Degenerate[t] && this->FacesTowards(t, corner, neighbors)))
     {
       std::swap(corner[1], corner[2]);
     }
@@ -300,14 +303,12 @@ std::vector<unsigned char> vtkTetrahedralCellTextures::LinkBoundaryFaces(
       this->Neighbors[face] = code(links.Pieces[first]);
       continue;
     }
-    // The list: (n, codes), padded to whole texels.
-    this->Neighbors[face] = SplitFace() + static_cast<int>(this->Neighbors.size() / 4);
-    this->Neighbors.push_back(static_cast<int>(n));
+    std::vector<int> codes;
     for (vtkIdType p = first; p < first + n; ++p)
     {
-      this->Neighbors.push_back(code(links.Pieces[p]));
+      codes.push_back(code(links.Pieces[p]));
     }
-    this->Neighbors.resize(4 * ((this->Neighbors.size() + 3) / 4), NoNeighbor());
+    this->Neighbors[face] = ppiray::AppendFaceList(this->Neighbors, codes, SplitFace());
     ++this->NumberOfSplitFaces;
     this->MaximumPiecesPerFace = std::max(this->MaximumPiecesPerFace, static_cast<int>(n));
   }
@@ -315,34 +316,72 @@ std::vector<unsigned char> vtkTetrahedralCellTextures::LinkBoundaryFaces(
 }
 
 //------------------------------------------------------------------------------
-bool vtkTetrahedralCellTextures::FacesTowards(vtkIdType t, const int corner[3],
-  const std::vector<vtkIdType>& neighbors, const std::vector<signed char>& neighborFaces) const
+void vtkTetrahedralCellTextures::LinkNonConformingFaces(const std::vector<vtkIdType>& boundary,
+  const std::vector<signed char>& orientation, std::vector<unsigned char>& linked)
 {
-  // The first non-flat cell reached through flat neighbours (breadth first,
-  // a few dozen at most: flat cells come in small clusters).
+  // The open faces left (of tetrahedra with volume), wound outward, linked
+  // to the open faces across them (ppirayNonConformingFaces.h).
+  std::vector<ppiray::OpenFace> faces;
+  std::vector<vtkIdType> keys; // 4 t + f
+  for (size_t k = 0; k < boundary.size(); k += 2)
+  {
+    const vtkIdType t = boundary[k];
+    const int f = static_cast<int>(boundary[k + 1]);
+    if (linked[4 * t + f] || this->Degenerate[t])
+    {
+      continue;
+    }
+    int corner[3] = { vtkUnstructuredGridCellAdjacency::FaceVertex(f, 0),
+      vtkUnstructuredGridCellAdjacency::FaceVertex(f, 1),
+      vtkUnstructuredGridCellAdjacency::FaceVertex(f, 2) };
+    if (orientation[t] < 0)
+    {
+      std::swap(corner[1], corner[2]);
+    }
+    ppiray::OpenFace face{ t, 1, {} };
+    for (int v = 0; v < 3; ++v)
+    {
+      face.Points[v] = this->Tets[4 * t + corner[v]];
+    }
+    faces.push_back(face);
+    keys.push_back(4 * t + f);
+  }
+  const ppiray::NonConformingLinks links = ppiray::LinkNonConformingFaces(
+    this->LocalPoints.data(), faces,
+    [&](vtkIdType i)
+    { return NeighborCode(keys[i] / 4, static_cast<int>(keys[i] % 4), false, false); },
+    [&](vtkIdType i) { return static_cast<size_t>(keys[i]); }, SplitFace(), MaximumPieces(),
+    this->Neighbors);
+  for (size_t i = 0; i < faces.size(); ++i)
+  {
+    linked[keys[i]] = linked[keys[i]] || links.Covered[i];
+  }
+  this->NumberOfNonConformingFaces = links.Faces;
+  this->MaximumPiecesPerFace = std::max(this->MaximumPiecesPerFace, links.MaximumPieces);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTetrahedralCellTextures::FacesTowards(
+  vtkIdType t, const int corner[3], const std::vector<vtkIdType>& neighbors) const
+{
+  // The first non-flat cell's centre on the triangle's positive side.
+  const vtkIdType n = ppiray::NearestSolidCell(t, neighbors.data(), 4, this->Degenerate.data());
+  if (n < 0)
+  {
+    return false;
+  }
   const double* local = this->LocalPoints.data();
   const vtkIdType* tet = this->Tets.data() + 4 * t;
-  std::vector<vtkIdType> queue = { t };
-  for (size_t k = 0; k < queue.size() && k < 64; ++k)
+  double centre[3] = { 0, 0, 0 };
+  for (int v = 0; v < 4; ++v)
   {
-    for (int g = 0; g < 4; ++g)
+    for (int k = 0; k < 3; ++k)
     {
-      const vtkIdType n = neighbors[4 * queue[k] + g];
-      if (n < 0 || std::find(queue.begin(), queue.end(), n) != queue.end())
-      {
-        continue;
-      }
-      if (this->Degenerate[n])
-      {
-        queue.push_back(n);
-        continue;
-      }
-      const double* q = local + 3 * this->Tets[4 * n + neighborFaces[4 * queue[k] + g]];
-      return vtkUnstructuredGridCellAdjacency::SignedVolume6(local + 3 * tet[corner[0]],
-               local + 3 * tet[corner[1]], local + 3 * tet[corner[2]], q) > 0;
+      centre[k] += 0.25 * local[3 * this->Tets[4 * n + v] + k];
     }
   }
-  return false;
+  return vtkUnstructuredGridCellAdjacency::SignedVolume6(local + 3 * tet[corner[0]],
+           local + 3 * tet[corner[1]], local + 3 * tet[corner[2]], centre) > 0;
 }
 
 //------------------------------------------------------------------------------

@@ -197,6 +197,12 @@ public:
   vtkGetMacro(NumberOfLinkedFaces, vtkIdType);
   vtkGetMacro(NumberOfSplitFaces, vtkIdType);
   /**
+   * Open faces linked to the open faces of other cells that meet them
+   * geometrically, not by point ids (hanging nodes, T-junctions:
+   * ppirayNonConformingFaces.h); a list where more than one meets a face.
+   */
+  vtkGetMacro(NumberOfNonConformingFaces, vtkIdType);
+  /**
    * Polyhedra split into tetrahedra (ppirayPolyhedra.h: a cone from an added
    * point at their centre; faces of five or more corners fanned from an added
    * point), counted in GetNumberOfSplitCells() too.
@@ -243,12 +249,17 @@ protected:
   std::vector<unsigned char> LinkBoundaryFaces(
     vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& boundary);
 
+  // Links the open faces left after LinkBoundaryFaces() (`linked`) to the
+  // open faces across them (ppiray::LinkNonConformingFaces); marks those
+  // covered as linked.
+  void LinkNonConformingFaces(const std::vector<vtkIdType>& boundary,
+    const std::vector<signed char>& orientation, std::vector<unsigned char>& linked);
+
   // Whether the triangle of flat tetrahedron t's corners (local indices,
   // counter-clockwise) faces the first non-flat cell reached from t through
-  // flat ones: a boundary face of a flat cell faces away from the cells it
-  // lies on.
-  bool FacesTowards(vtkIdType t, const int corner[3], const std::vector<vtkIdType>& neighbors,
-    const std::vector<signed char>& neighborFaces) const;
+  // flat ones (ppiray::NearestSolidCell).
+  bool FacesTowards(
+    vtkIdType t, const int corner[3], const std::vector<vtkIdType>& neighbors) const;
 
   int Layout = PLANES;
   double Origin[3] = { 0, 0, 0 };
@@ -286,6 +297,7 @@ protected:
   int MaximumPiecesPerFace = 0;
   vtkIdType NumberOfUnlinkedFaces = 0;
   vtkIdType NumberOfReentryFaces = 0;
+  vtkIdType NumberOfNonConformingFaces = 0;
   vtkIdType NumberOfSplitCells = 0;
   vtkIdType NumberOfQuadraticCells = 0;
 

@@ -10,6 +10,7 @@
 #include "vtkTextureObject.h"
 
 #include "cubic_fs.h"
+#include "flat_cells_fs.h"
 #include "gauss_legendre_fs.h"
 #include "hexahedron_accurate_fs.h"
 #include "hexahedron_fast_fs.h"
@@ -94,6 +95,7 @@ std::string vtkPPIRayCellBuffers::GetMarchShader(bool accurateCubics) const
   vtkShaderProgram::Substitute(march, "//PPIRay::MonotonicPiece::Impl",
     accurateCubics ? hexahedron_accurate_fs : hexahedron_fast_fs);
   vtkShaderProgram::Substitute(march, "//PPIRay::ProjectionCubic::Impl", projection_cubic_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::FlatCells::Impl", flat_cells_fs);
   vtkShaderProgram::Substitute(march, "//PPIRay::CellKind::Impl", this->GetCellShader());
   vtkShaderProgram::Substitute(march, "//PPIRay::Stretch::Impl", stretch_fs);
   vtkShaderProgram::Substitute(march, "//PPIRay::ListedFaces::Impl", listed_faces_fs);

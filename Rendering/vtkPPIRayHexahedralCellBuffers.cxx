@@ -57,8 +57,9 @@ std::vector<vtkPPIRayCellBuffers::CellArray> vtkPPIRayHexahedralCellBuffers::Get
 vtkPPIRayCellBuffers::Features vtkPPIRayHexahedralCellBuffers::GetFeatures() const
 {
   Features features;
+  features.FlatCells = this->Cells->GetNumberOfFlatHexahedra() > 0;
   features.Folds = this->Cells->GetNumberOfFoldedFaces() > 0;
-  features.MaximumSplitPieces = this->Cells->GetNumberOfSplitQuadrilaterals() > 0 ? 2 : 0;
+  features.MaximumSplitPieces = this->Cells->GetMaximumPiecesPerFace();
   features.ReentryEdges = this->Cells->GetNumberOfReentryFaces() > 0;
   return features;
 }
@@ -90,7 +91,8 @@ std::string vtkPPIRayHexahedralCellBuffers::GetCellShader() const
   const vtkHexahedralCellTextures& cells = *this->Cells;
   const bool mixed =
     cells.GetNumberOfCellsOfKind(ppiray::HEXAHEDRON_KIND) < cells.GetNumberOfHexahedra();
-  kinds << ");\nconst bool MIXED_CELLS = " << (mixed ? "true" : "false")
+  kinds << ");\nconst int FLAT_KIND_BIT = " << ppiray::FLAT_KIND_BIT
+        << ";\nconst bool MIXED_CELLS = " << (mixed ? "true" : "false")
         << ";\nconst bool PYRAMID_CELLS = "
         << (cells.GetNumberOfCellsOfKind(ppiray::PYRAMID_KIND) > 0 ? "true" : "false")
         << ";\nconst bool TETRAHEDRA_ONLY = "
@@ -137,8 +139,8 @@ vtkPPIRayCellBuffers::BuildResult vtkPPIRayHexahedralCellBuffers::BuildGeometry(
   }
   if (hexes.GetNumberOfFlatHexahedra() > 0)
   {
-    vtkWarningWithObjectMacro(reporter,
-      << hexes.GetNumberOfFlatHexahedra() << " zero-volume " << this->GetCellName() << " skipped.");
+    vtkWarningWithObjectMacro(reporter, << hexes.GetNumberOfFlatHexahedra() << " zero-volume "
+                                        << this->GetCellName() << ": crossed with zero length.");
   }
   if (hexes.GetNumberOfSingularFrames() > 0)
   {

@@ -21,7 +21,9 @@
 // traversal is watertight on non-planar faces. The exit is the nearest
 // triangle the ray actually crosses; if rounding lets the ray slip between
 // the two (an edge), the nearest face plane it heads out of (the convex-cell
-// rule). A folded entry face can be the exit too (exitCandidate).
+// rule). A folded entry face can be the exit too (exitCandidate). A flat
+// cell (zero volume, FLAT_KIND_BIT in its kind) is crossed with zero length
+// (flat_cells_fs.glsl).
 
 //PPIRay::HexahedronField::Impl
 
@@ -37,6 +39,7 @@ struct Cell
   int id;
 };
 int cellKindLoaded; // ppirayLinearCellKinds.h: 0 hexahedron, 1 wedge, 2 pyramid, 3 tetrahedron
+bool cellFlat;      // zero volume
 vec3 cellP[8];
 int cellMask; // bit f: face f split along its second diagonal
 vec4 cellC;   // c0..c3
@@ -67,7 +70,8 @@ void loadCellData(int h)
   cellP[7] = t5.yzw;
   ivec4 n = hexNeighborsTexel(NEIGHBOR_TEXELS * h + 1);
   cellMask = n.z;
-  cellKindLoaded = n.w;
+  cellKindLoaded = n.w & (FLAT_KIND_BIT - 1);
+  cellFlat = FLAT_CELLS && (n.w & FLAT_KIND_BIT) != 0;
   cellC = hexCoefficientsTexel(FIELD_TEXELS * h);
   cellD = hexCoefficientsTexel(FIELD_TEXELS * h + 1);
   cellE = QUADRATIC_FIELD ? hexCoefficientsTexel(FIELD_TEXELS * h + 2).xyz : vec3(0.0);
@@ -178,6 +182,7 @@ int boundaryEntry(int code, vec3 origin, vec3 direction, float resume, out int f
   Cell c = loadCell(cell);
   ivec3 tri = faceTriangle(cellKind(c), face, code - 2 * FACES * cell - 2 * face, cellMask);
   vec3 n = cross(cellP[tri.y] - cellP[tri.x], cellP[tri.z] - cellP[tri.x]);
+  n = cellFlat && dot(n, direction) > 0.0 ? -n : n; // a flat cell has no outside
   t = max(dot(n, cellP[tri.x] - origin) / min(dot(n, direction), -1.0e-30), resume);
   return cell;
 }
@@ -218,6 +223,36 @@ int nearestCrossedFace(Cell cell, int entryFace, vec3 origin, vec3 direction, fl
   return hitFace;
 }
 
+// The face of the loaded flat cell, other than `entryFace`, whose triangle
+// best contains x (the largest smallest barycentric coordinate,
+// flat_cells_fs.glsl); -1: none.
+int flatCellExit(Cell cell, int entryFace, vec3 x)
+{
+  float area2[12], score[12];
+  float largest = 0.0;
+  for (int f = 0; f < 6; ++f)
+  {
+    for (int side = 0; side < 2; ++side)
+    {
+      ivec3 v = faceTriangle(cellKind(cell), f, side, cellMask);
+      score[2 * f + side] = smallestBarycentric(cellP[v.x], cellP[v.y], cellP[v.z], x, area2[2 * f + side]);
+      area2[2 * f + side] = side < faceTriangles(cellKind(cell), f) ? area2[2 * f + side] : 0.0;
+      largest = max(largest, area2[2 * f + side]);
+    }
+  }
+  int best = -1;
+  float bestScore = -INFINITY;
+  for (int i = 0; i < 12; ++i)
+  {
+    if (i / 2 != entryFace && hasArea(area2[i], largest) && score[i] > bestScore)
+    {
+      bestScore = score[i];
+      best = i / 2;
+    }
+  }
+  return best;
+}
+
 // The face of a hexahedron across the one a walk back came in by, where it
 // has a neighbour (-1: none, a boundary face with or without a re-entry
 // list, or another kind).
@@ -235,10 +270,15 @@ int oppositeFace(int cell, int kind, int entryFace)
 // actually crossed. Backwards (a fold walked back): the face opposite the one
 // the walk came in by (the next layer of a fold, also where the line entered
 // the cell through the side), else the farthest plane the ray heads into.
+// A flat cell: flatCellExit, at t.
 int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, bool backwards,
   out float tExit)
 {
   tExit = t;
+  if (cellFlat)
+  {
+    return flatCellExit(cell, entryFace, origin + t * direction);
+  }
   float tPlane = INFINITY, tIn = -INFINITY;
   int planeFace = -1, planeSide = 0, inFace = -1;
   for (int f = 0; f < 6; ++f)
@@ -346,10 +386,19 @@ vec3 fieldGradient(Cell cell, vec3 x)
 }
 
 // How far x, on face e of cell h, lies outside that face: outside the
-// cell's other faces' triangle planes (unit normals).
+// cell's other faces' triangle planes (unit normals); a flat cell's, outside
+// the nearer of face e's triangles in their planes.
 float outsideFace(int h, int e, vec3 x)
 {
   Cell cell = loadCell(h);
+  if (cellFlat)
+  {
+    ivec3 u = faceTriangle(cellKind(cell), e, 0, cellMask);
+    ivec3 w = faceTriangle(cellKind(cell), e, 1, cellMask);
+    float second = faceTriangles(cellKind(cell), e) > 1
+      ? outsideTriangle(cellP[w.x], cellP[w.y], cellP[w.z], x) : INFINITY;
+    return min(outsideTriangle(cellP[u.x], cellP[u.y], cellP[u.z], x), second);
+  }
   float outside = -INFINITY;
   for (int f = 0; f < 6; ++f)
   {
@@ -366,11 +415,16 @@ float outsideFace(int h, int e, vec3 x)
 
 // Where the ray, at tMin or later, enters cell h through face e (te:
 // the nearer of its two triangles' planes it heads into), and how far that
-// point lies outside the face; INFINITY where it heads in through neither.
+// point lies outside the face; INFINITY where it heads in through neither
+// or the cell is flat.
 float faceEntry(int h, int e, vec3 origin, vec3 direction, float tMin, out float te)
 {
   Cell cell = loadCell(h);
   te = INFINITY;
+  if (cellFlat)
+  {
+    return INFINITY;
+  }
   for (int side = 0; side < 2; ++side)
   {
     ivec3 v;

@@ -70,32 +70,25 @@ int boundaryEntry(int code, vec3 origin, vec3 direction, float resume, out int f
 }
 
 // The face of a flat cell (corners c_v, face f = the three other than c_f),
-// other than `entryFace`, whose triangle best contains x: the largest
-// smallest barycentric coordinate of x projected on the face's plane,
-// lambda_a = m . ((b - x) x (c - x)) / |m|^2 with m = (b - a) x (c - a);
-// faces of (relatively) zero area are never taken. -1: none.
+// other than `entryFace`, whose triangle best contains x (the largest
+// smallest barycentric coordinate, flat_cells_fs.glsl); -1: none.
 int flatCellExit(vec4 c[4], int entryFace, vec3 x)
 {
-  vec3 m[4];
+  float area2[4], score[4];
   float largest = 0.0;
   for (int f = 0; f < 4; ++f)
   {
-    vec3 a = c[(f + 1) & 3].xyz;
-    m[f] = cross(c[(f + 2) & 3].xyz - a, c[(f + 3) & 3].xyz - a);
-    largest = max(largest, dot(m[f], m[f]));
+    score[f] = smallestBarycentric(
+      c[(f + 1) & 3].xyz, c[(f + 2) & 3].xyz, c[(f + 3) & 3].xyz, x, area2[f]);
+    largest = max(largest, area2[f]);
   }
   int best = -1;
   float bestScore = -INFINITY;
   for (int f = 0; f < 4; ++f)
   {
-    float area2 = dot(m[f], m[f]);
-    vec3 a = c[(f + 1) & 3].xyz - x, b = c[(f + 2) & 3].xyz - x, d = c[(f + 3) & 3].xyz - x;
-    float la = dot(m[f], cross(b, d)) / area2;
-    float lb = dot(m[f], cross(d, a)) / area2;
-    float score = min(min(la, lb), 1.0 - la - lb);
-    if (f != entryFace && area2 > 1.0e-8 * largest && score > bestScore)
+    if (f != entryFace && hasArea(area2[f], largest) && score[f] > bestScore)
     {
-      bestScore = score;
+      bestScore = score[f];
       best = f;
     }
   }
@@ -157,22 +150,6 @@ int stretchDegree(Stretch s)
 vec3 fieldGradient(Cell cell, vec3 x)
 {
   return cellFieldData.xyz;
-}
-
-// How far x lies outside triangle (a, b, c) in its plane: the largest
-// distance past one of its edges, m_i . (v_i - x) with m_i the unit inward
-// normal of edge v_i v_i+1 in the plane (negative inside).
-float outsideTriangle(vec3 a, vec3 b, vec3 c, vec3 x)
-{
-  vec3 v[3] = vec3[3](a, b, c);
-  vec3 n = cross(b - a, c - a);
-  float outside = -INFINITY;
-  for (int i = 0; i < 3; ++i)
-  {
-    vec3 inward = normalize(cross(n, v[(i + 1) % 3] - v[i]));
-    outside = max(outside, dot(inward, v[i] - x));
-  }
-  return outside;
 }
 
 // How far x lies outside the planes p other than e: max_f (n_f . x - d_f).

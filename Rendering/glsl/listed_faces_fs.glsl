@@ -50,12 +50,14 @@ int reentryAcrossEdge(int list, vec3 origin, vec3 direction, inout float t)
 }
 
 // Out through a boundary face split into pieces (the imaginary faces of a
-// convexified grid on it, listed from texel `list`: n, then their codes): the
-// piece x (the exit point, on the face) lies in, the one it is least outside
-// of (outsideFace), so a point on an edge between pieces goes to one of them.
-// -1: no piece (not reached for a valid list). EXIT_LOOPS: SPLIT_PIECE_LOOPS
-// per piece.
-int splitFacePiece(int list, vec3 x)
+// convexified grid on it, or the faces of other cells that meet it
+// geometrically, ppirayNonConformingFaces.h; listed from texel `list`: n,
+// then their codes): the piece x (the exit point at ray parameter t, on the
+// face) lies in, the one it is least outside of (outsideFace), so a point on
+// an edge between pieces goes to one of them. -1: none within rounding
+// (1e-5 of |t| + |x|): the ray leaves the mesh where pieces do not cover the
+// face. EXIT_LOOPS: SPLIT_PIECE_LOOPS per piece.
+int splitFacePiece(int list, vec3 x, float t)
 {
   int n = neighborListTexel(list).x;
   int piece = -1;
@@ -72,7 +74,7 @@ int splitFacePiece(int list, vec3 x)
     }
   }
   loopsLeft -= SPLIT_PIECE_LOOPS * min(n, MAXIMUM_SPLIT_PIECES) + 1; // and the outer step loop's iteration
-  return piece;
+  return leastOutside <= 1.0e-5 * (abs(t) + length(x)) ? piece : -1;
 }
 
 // The cell and face a listed exit face `code`, left at t, enters (t moves
@@ -81,5 +83,5 @@ int listedFaceEntry(int code, vec3 origin, vec3 direction, inout float t)
 {
   return REENTRY_EDGES && code >= REENTRY_FACE
     ? reentryAcrossEdge(code - REENTRY_FACE, origin, direction, t)
-    : splitFacePiece(code - SPLIT_FACE, origin + t * direction);
+    : splitFacePiece(code - SPLIT_FACE, origin + t * direction, t);
 }

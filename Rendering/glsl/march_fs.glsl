@@ -66,6 +66,8 @@ struct Stretch
   int degree;
 };
 
+//PPIRay::FlatCells::Impl
+
 //PPIRay::CellKind::Impl
 
 //PPIRay::Stretch::Impl

@@ -6,12 +6,16 @@
 //  1. ABC split at its centroid S into 3 pieces: one split face, its list
 //     (3, the pieces' codes), each piece's code back to ABC, 6 boundary
 //     triangles left (the mesh's 3 others, the 3 around E);
-//  2. two of the 3 pieces: they do not cover ABC, nothing joined, one face
-//     left open, all 10 open faces stay boundary;
+//  2. two of the 3 pieces: they do not cover ABC, nothing joined through the
+//     array, one face left open by it; then joined by geometry
+//     (ppirayNonConformingFaces.h), ABC partly covered: a list, and still a
+//     boundary face;
 //  3. one piece, ABC through other point ids at the same places (a seam):
 //     joined directly (no list);
-//  4. the pieces naming a cell they do not lie on: nothing joined, 3 left open;
-//  5. no cell array: nothing joined, nothing counted.
+//  4. the pieces naming a cell they do not lie on: not joined through the
+//     array, 3 left open by it, then joined by geometry (they lie on ABC:
+//     ppirayNonConformingFaces.h);
+//  5. no cell array: nothing counted, joined by geometry as in 4.
 
 #include "ppirayBoundaryFaceLinks.h"
 #include "vtkCellData.h"
@@ -105,7 +109,8 @@ int TestBoundaryFaceLinks(int, char*[])
               << cells->GetNumberOfSplitFaces() << ", most pieces "
               << cells->GetMaximumPiecesPerFace() << ", open " << cells->GetNumberOfUnlinkedFaces()
               << ", boundary triangles " << cells->GetBoundaryFaces().size() << ", neighbour ints "
-              << nb.size() << "\n";
+              << nb.size() << ", by geometry " << cells->GetNumberOfNonConformingFaces()
+              << ", ABC code " << nb[meshFace] << "\n";
     const vtkIdType imaginary = scene == 2 ? 2 : scene == 3 ? 1 : 3;
     if (scene == 1)
     {
@@ -130,13 +135,29 @@ int TestBoundaryFaceLinks(int, char*[])
                cells->GetBoundaryFaces().size() == 6,
         scene, "the seam face joined directly both ways");
     }
-    else
+    else if (scene == 2)
     {
-      // Still boundary: no code, or a reflex edge's re-entry list (where the
-      // imaginary cells' faces meet the open face at an angle).
+      // Not covered by the array's pieces: not joined through the array;
+      // joined by geometry (ABC to its 2 pieces by a list, still a boundary
+      // face where it is exposed; each piece to ABC directly).
       expect(cells->GetNumberOfLinkedFaces() == 0 && cells->GetNumberOfSplitFaces() == 0 &&
-               (nb[meshFace] == Cells::NoNeighbor() || nb[meshFace] >= Cells::ReentryFace()),
-        scene, "nothing joined");
+               cells->GetNumberOfNonConformingFaces() == 3 && nb[meshFace] >= Cells::SplitFace() &&
+               nb[meshFace] < Cells::ReentryFace(),
+        scene, "nothing joined through the array, joined by geometry");
+    }
+    if (scene >= 4)
+    {
+      // Not joined through the cell array, but the pieces lie on ABC: joined
+      // by geometry (ppirayNonConformingFaces.h), ABC to its 3 pieces by a
+      // list, each piece to ABC directly.
+      expect(cells->GetNumberOfLinkedFaces() == 0 && cells->GetNumberOfSplitFaces() == 0 &&
+               cells->GetNumberOfNonConformingFaces() == 4 && nb[meshFace] >= Cells::SplitFace() &&
+               nb[meshFace] < Cells::ReentryFace() &&
+               cells->GetBoundaryFaces().size() == (scene == 4 ? 8u : 6u),
+        scene, "joined by geometry only");
+    }
+    if (scene != 1 && scene != 3)
+    {
       const vtkIdType open = scene == 2 ? 1 : scene == 4 ? 3 : 0;
       expect(
         cells->GetNumberOfUnlinkedFaces() == open, scene, "left open: " + std::to_string(open));

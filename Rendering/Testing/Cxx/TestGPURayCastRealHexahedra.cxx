@@ -42,10 +42,10 @@
 // mid-plane across the view, which every ray crosses) must exceed them; it
 // measures 5.5 (LOX Post) to 23.
 //
-// UNISIM-II: the mapper leaves the 969 flat (zero-volume) cells out with a
-// warning and renders the other 46,641 natively; that is asserted, and that
-// the whole mesh's image equals, to the bit, the image of the mesh without
-// them (the scene). The reference is unreliable on collapsed hexahedra, so the main
+// UNISIM-II: the mapper crosses the 969 flat (zero-volume) cells with zero
+// length, with a warning, and renders all 47,610 natively; that is asserted,
+// and that the whole mesh's image equals, to the bit, the image of the mesh
+// without them (the scene). The reference is unreliable on collapsed hexahedra, so the main
 // check there is against the mapper's own tetrahedra: depth is linear in the
 // coordinates, so trilinear hexahedra and linear tetrahedra both reproduce it
 // exactly and the two images may differ only where traversal differs: p99 at
@@ -591,8 +591,7 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
     scene.Renderer->ResetCamera();
     scene.Renderer->GetActiveCamera()->Zoom(1.3);
 
-    // The whole mesh: its flat cells are left out (zero volume), the rest
-    // renders natively.
+    // The whole mesh natively, its flat cells crossed with zero length.
     scene.Window->Render();
     const auto wholeImage = ppiray_test::ReadRGB(scene.Window);
     std::cout << "UNISIM whole mesh: " << whole->GetNumberOfCells() << " cells ("
@@ -601,10 +600,11 @@ int TestGPURayCastRealHexahedra(int argc, char* argv[])
               << mapper->GetStatistics()->GetNumberOfTetrahedra() << " tetrahedra, "
               << mapper->GetStatistics()->GetNumberOfPeels() << " peels; warnings: ["
               << messages->Warnings << messages->Errors << "]\n";
-    if (mapper->GetStatistics()->GetNumberOfHexahedra() != 46641 ||
-        messages->Warnings.find("969 zero-volume hexahedra skipped") == std::string::npos)
+    if (mapper->GetStatistics()->GetNumberOfHexahedra() != 47610 ||
+        messages->Warnings.find("969 zero-volume hexahedra: crossed with zero length") ==
+          std::string::npos)
     {
-      errors += Fail("UNISIM: expected the 969 flat hexahedra skipped, 46641 native");
+      errors += Fail("UNISIM: expected 47610 native hexahedra, the 969 flat ones crossed");
     }
 
     // Without the flat cells: natively.

@@ -1,0 +1,122 @@
+/**
+ * @file   ppirayNonConformingFaces.h
+ * @brief  open faces that meet other open faces geometrically (hanging nodes, T-junctions)
+ *
+ * The adjacency pairs faces by point ids (ppirayCellAdjacency.h). Where a
+ * mesh is non-conforming (a face next to four smaller ones at a hanging
+ * node, a triangle whose edge holds another's vertex, the two sides of a
+ * fault with consistent geometry, or the same face through duplicated
+ * points) both sides stay open and a ray would leave the mesh there and
+ * need a peel to come back. MatchNonConformingFaces() finds, for each open
+ * face, the open faces of other cells across it: coplanar (every corner
+ * within 1e-5 of the larger face's diameter of the other's plane), facing
+ * it (unit normals n_a . n_b < -(1 - 1e-6)), overlapping with positive area
+ * (the area of the intersection of their triangles projected on the plane,
+ * by clipping, above 1e-6 of the smaller face's area). A face is covered
+ * when its overlaps add up to its area (within 1e-5): a ray leaving it
+ * anywhere enters one of them. Non-planar faces (curved cells split by
+ * different diagonals on each side) are not matched: they are not
+ * coplanar.
+ */
+#ifndef ppirayNonConformingFaces_h
+#define ppirayNonConformingFaces_h
+
+#include "ppirayFiltersModule.h" // for export macro
+#include "vtkType.h"
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace ppiray
+{
+/** An open face: its cell and its triangles (point ids, wound outward). */
+struct OpenFace
+{
+  vtkIdType Cell;
+  int Triangles; // 1 or 2
+  std::array<vtkIdType, 6> Points;
+};
+
+/** What MatchNonConformingFaces() finds, per open face (indices into the faces). */
+struct FaceOverlaps
+{
+  /** The faces across face i: Across[Offsets[i] .. Offsets[i + 1]). */
+  std::vector<vtkIdType> Offsets{ 0 };
+  std::vector<vtkIdType> Across;
+  /** Whether the faces across face i cover it. */
+  std::vector<unsigned char> Covered;
+};
+
+/** `points`: 3 doubles per point id. */
+PPIRAYFILTERS_EXPORT FaceOverlaps MatchNonConformingFaces(
+  const double* points, const std::vector<OpenFace>& faces);
+
+/**
+ * Appends a list of neighbour codes to a neighbour array (their number n,
+ * then the codes, padded with -1 to whole texels of 4) and returns the code
+ * that names it: `listBase` + its first texel.
+ */
+PPIRAYFILTERS_EXPORT int AppendFaceList(
+  std::vector<int>& neighbors, const std::vector<int>& codes, int listBase);
+
+/** What LinkNonConformingFaces() did. */
+struct NonConformingLinks
+{
+  /** Open faces linked to the faces across them (covered or not). */
+  vtkIdType Faces = 0;
+  /** Of those, the faces that need a list (more than one face across, or not covered). */
+  vtkIdType Lists = 0;
+  /** The longest list. */
+  int MaximumPieces = 0;
+  /** Per open face: covered and linked (no longer a boundary face to enter by). */
+  std::vector<unsigned char> Covered;
+};
+
+/**
+ * Links each open face to the open faces across it
+ * (MatchNonConformingFaces()): a face that one face covers gets that face's
+ * code, any other a list of their codes (AppendFaceList(); the march takes
+ * the one the exit point lies in, or none: listed_faces_fs.glsl), at most
+ * `maximumPieces` (else left open). `code(i)`: the neighbour code that
+ * enters open face i; `slot(i)`: its entry in `neighbors`. A face not
+ * covered stays a boundary face too (rays enter the mesh where it is
+ * exposed).
+ */
+template <typename Code, typename Slot>
+NonConformingLinks LinkNonConformingFaces(const double* points,
+  const std::vector<OpenFace>& faces, Code code, Slot slot, int listBase, int maximumPieces,
+  std::vector<int>& neighbors)
+{
+  const FaceOverlaps overlaps = MatchNonConformingFaces(points, faces);
+  NonConformingLinks links;
+  links.Covered.assign(faces.size(), 0);
+  std::vector<int> codes;
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(faces.size()); ++i)
+  {
+    const vtkIdType first = overlaps.Offsets[i], n = overlaps.Offsets[i + 1] - first;
+    if (n == 0 || n > maximumPieces)
+    {
+      continue;
+    }
+    ++links.Faces;
+    links.Covered[i] = overlaps.Covered[i];
+    if (n == 1 && overlaps.Covered[i])
+    {
+      neighbors[slot(i)] = code(overlaps.Across[first]);
+      continue;
+    }
+    codes.clear();
+    for (vtkIdType k = first; k < first + n; ++k)
+    {
+      codes.push_back(code(overlaps.Across[k]));
+    }
+    neighbors[slot(i)] = AppendFaceList(neighbors, codes, listBase);
+    ++links.Lists;
+    links.MaximumPieces = std::max(links.MaximumPieces, static_cast<int>(n));
+  }
+  return links;
+}
+}
+
+#endif

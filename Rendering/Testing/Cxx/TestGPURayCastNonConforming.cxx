@@ -1,0 +1,229 @@
+// Non-conforming faces crossed in one peel (ppirayNonConformingFaces.h):
+// where cells meet at hanging nodes or T-junctions their faces share no
+// point ids, the adjacency leaves both sides open, and the ray left the mesh
+// there and came back on the next peel. Now each open face is linked to
+// the open faces of other cells across it (coplanar, facing it,
+// overlapping): one face directly, several through a list from which the
+// exit point picks. Against the CPU reference (which integrates each cell
+// on its own and knows no adjacency), a linear field (exact in every cell):
+//  1. a hexahedron next to eight half-size ones (four on the shared face),
+//     marched natively: one peel (two without the links);
+//  2. the same cells tetrahedralized (vtkDataSetTriangleFilter: the large
+//     face's two triangles against the small faces' eight), in the
+//     tetrahedron layouts (the .Compact variant too): one peel;
+//  3. a tetrahedral face next to four: a tetrahedron against one refined
+//     into eight (red refinement), whose shared face is four triangles;
+//  4. two blocks of cubes of different sizes (2 x 2 against 3 x 3 on the
+//     shared face, every face met by up to four, lists of pieces), natively
+//     and as tetrahedra: one peel;
+//  5. partly covered faces (a slab of small cubes shifted by a quarter
+//     across the large one: faces partly against cells, partly outside):
+//     the exit point outside every face across ends the peel there; exact,
+//     in the peels the geometry needs.
+
+#include "PPIRayExpectNative.h"
+#include "PPIRayPixelCheck.h"
+#include "PPIRayTestScenes.h"
+#include "vtkDataSetTriangleFilter.h"
+#include "vtkDoubleArray.h"
+#include "vtkHexahedralCellTextures.h"
+#include "vtkIdList.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkSmartPointer.h"
+#include "vtkTetrahedralCellTextures.h"
+#include "vtkUnstructuredGridGPURayCastMapper.h"
+
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <string>
+
+namespace
+{
+constexpr int Size = 200;
+
+// A grid built cell by cell, points merged by position (on a 1/12 lattice).
+struct GridBuilder
+{
+  vtkNew<vtkPoints> Points;
+  std::map<std::array<long, 3>, vtkIdType> Ids;
+  vtkSmartPointer<vtkUnstructuredGrid> Grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+
+  vtkIdType Point(double x, double y, double z)
+  {
+    const std::array<long, 3> key = { std::lround(12 * x), std::lround(12 * y),
+      std::lround(12 * z) };
+    auto found = this->Ids.find(key);
+    if (found != this->Ids.end())
+    {
+      return found->second;
+    }
+    return this->Ids[key] = this->Points->InsertNextPoint(x, y, z);
+  }
+  void Cube(double x, double y, double z, double h)
+  {
+    const int corner[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
+      { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } };
+    vtkIdType ids[8];
+    for (int v = 0; v < 8; ++v)
+    {
+      ids[v] = this->Point(x + h * corner[v][0], y + h * corner[v][1], z + h * corner[v][2]);
+    }
+    this->Grid->InsertNextCell(VTK_HEXAHEDRON, 8, ids);
+  }
+  void Tetra(const std::array<double, 3> (&x)[4])
+  {
+    vtkIdType ids[4];
+    for (int v = 0; v < 4; ++v)
+    {
+      ids[v] = this->Point(x[v][0], x[v][1], x[v][2]);
+    }
+    this->Grid->InsertNextCell(VTK_TETRA, 4, ids);
+  }
+  // The grid with the linear field s = 0.2 + 0.3 x + 0.2 y + 0.1 z.
+  vtkSmartPointer<vtkUnstructuredGrid> Done()
+  {
+    this->Grid->SetPoints(this->Points);
+    vtkNew<vtkDoubleArray> s;
+    s->SetName("s");
+    for (vtkIdType p = 0; p < this->Points->GetNumberOfPoints(); ++p)
+    {
+      double x[3];
+      this->Points->GetPoint(p, x);
+      s->InsertNextValue(0.2 + 0.3 * x[0] + 0.2 * x[1] + 0.1 * x[2]);
+    }
+    this->Grid->GetPointData()->SetScalars(s);
+    return this->Grid;
+  }
+};
+
+// The unit cube at the origin filled with cubes of size 1 / left and, on
+// its +x face, `layers` of cubes of size 1 / right (right x right on the
+// face), shifted by `shift` along y.
+vtkSmartPointer<vtkUnstructuredGrid> Blocks(int left, int right, int layers, double shift)
+{
+  GridBuilder b;
+  for (int i = 0; i < left; ++i)
+    for (int j = 0; j < left; ++j)
+      for (int k = 0; k < left; ++k)
+        b.Cube(i / double(left), j / double(left), k / double(left), 1.0 / left);
+  for (int i = 0; i < layers; ++i)
+    for (int j = 0; j < right; ++j)
+      for (int k = 0; k < right; ++k)
+        b.Cube(1 + i / double(right), shift + j / double(right), k / double(right), 1.0 / right);
+  return b.Done();
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> Tetrahedralized(vtkUnstructuredGrid* grid)
+{
+  vtkNew<vtkDataSetTriangleFilter> split;
+  split->SetInputData(grid);
+  split->Update();
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->DeepCopy(split->GetOutput());
+  return out;
+}
+
+// A tetrahedron and, across its face (1,0,0), (0,1,0), (0,0,1), one refined
+// into eight (red refinement: four corner tetrahedra, the octahedron left
+// split around the diagonal m02 - m13).
+vtkSmartPointer<vtkUnstructuredGrid> FaceNextToFour()
+{
+  using P = std::array<double, 3>;
+  GridBuilder b;
+  const P v0 = { 1, 0, 0 }, v1 = { 0, 1, 0 }, v2 = { 0, 0, 1 }, v3 = { 1, 1, 1 };
+  b.Tetra({ v0, v1, v2, P{ 0, 0, 0 } });
+  auto mid = [](const P& a, const P& c)
+  { return P{ (a[0] + c[0]) / 2, (a[1] + c[1]) / 2, (a[2] + c[2]) / 2 }; };
+  const P m01 = mid(v0, v1), m02 = mid(v0, v2), m03 = mid(v0, v3), m12 = mid(v1, v2),
+          m13 = mid(v1, v3), m23 = mid(v2, v3);
+  b.Tetra({ v0, m01, m02, m03 });
+  b.Tetra({ v1, m01, m12, m13 });
+  b.Tetra({ v2, m02, m12, m23 });
+  b.Tetra({ v3, m03, m13, m23 });
+  b.Tetra({ m02, m13, m01, m12 });
+  b.Tetra({ m02, m13, m12, m23 });
+  b.Tetra({ m02, m13, m23, m03 });
+  b.Tetra({ m02, m13, m03, m01 });
+  return b.Done();
+}
+
+int Fail(const std::string& what)
+{
+  std::cerr << "FAILED: " << what << "\n";
+  return 1;
+}
+
+// The open faces the layout of `grid` links geometrically.
+vtkIdType NonConformingFaces(vtkUnstructuredGrid* grid)
+{
+  vtkNew<vtkHexahedralCellTextures> hexes;
+  if (hexes->BuildGeometry(grid))
+  {
+    return hexes->GetNumberOfNonConformingFaces();
+  }
+  vtkNew<vtkTetrahedralCellTextures> tets;
+  tets->BuildGeometry(grid);
+  return tets->GetNumberOfNonConformingFaces();
+}
+}
+
+int TestGPURayCastNonConforming(int argc, char* argv[])
+{
+  using Mapper = vtkUnstructuredGridGPURayCastMapper;
+  int errors = 0;
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
+  ppiray_test::Scene scene(Size, Size);
+  ppiray_test::SmoothTransferFunction(scene.Property, 0.0, 1.0, 0.8, 0.15);
+  vtkNew<Mapper> mapper;
+
+  struct Case
+  {
+    const char* Name;
+    vtkSmartPointer<vtkUnstructuredGrid> Grid;
+    vtkIdType Linked; // open faces linked geometrically
+  };
+  const auto hanging = Blocks(1, 2, 2, 0.0);
+  const auto sizes = Blocks(2, 3, 2, 0.0);
+  const Case cases[] = {
+    { "a hexahedron next to eight", hanging, 1 + 4 },
+    { "a hexahedron next to eight, tetrahedralized", Tetrahedralized(hanging), 2 + 8 },
+    { "a tetrahedral face next to four", FaceNextToFour(), 1 + 4 },
+    { "2 x 2 cubes against 3 x 3", sizes, 4 + 9 },
+    { "2 x 2 cubes against 3 x 3, tetrahedralized", Tetrahedralized(sizes), 8 + 18 },
+  };
+  for (const Case& c : cases)
+  {
+    const vtkIdType linked = NonConformingFaces(c.Grid);
+    std::cout << c.Name << ": " << c.Grid->GetNumberOfCells() << " cells, " << linked
+              << " faces linked\n";
+    if (linked != c.Linked)
+    {
+      errors += Fail(std::string(c.Name) + ": expected " + std::to_string(c.Linked));
+    }
+    scene.Show(mapper, c.Grid, { 3.5, 2.6, 2.2 }, { 0.8, 0.5, 0.5 });
+    scene.Renderer->GetActiveCamera()->Zoom(1.2);
+    const bool tetrahedra = c.Grid->GetCellType(0) == VTK_TETRA;
+    errors += ppiray_test::ExpectNative(c.Name, scene, mapper, c.Grid,
+      tetrahedra ? Mapper::HEXAHEDRON_SUBDIVIDE : Mapper::HEXAHEDRON_ACCURATE, Size, 1.0, 1.0);
+  }
+
+  // 5. Partly covered faces: exact, in as many peels as the geometry needs.
+  for (const bool tetrahedra : { false, true })
+  {
+    auto grid = Blocks(1, 2, 1, 0.25);
+    grid = tetrahedra ? Tetrahedralized(grid) : grid;
+    const std::string name = tetrahedra ? "shifted slab, tetrahedralized" : "shifted slab";
+    scene.Show(mapper, grid, { 3.5, 2.6, 2.2 }, { 0.8, 0.5, 0.5 });
+    mapper->SetHexahedronModeToAccurate();
+    scene.Window->Render();
+    const auto check = ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property,
+      ppiray_test::ReadRGB(scene.Window), Size, Size);
+    std::cout << name << ": " << NonConformingFaces(grid) << " faces linked, peels "
+              << mapper->GetStatistics()->GetNumberOfPeels() << ", ";
+    errors += ppiray_test::ExpectReference(name.c_str(), check, 10000);
+  }
+  return errors == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
