@@ -177,8 +177,8 @@ struct FaceGrid
   static std::uint64_t Key(const glm::i64vec3& i)
   {
     return (static_cast<std::uint64_t>(i.x) & 0x1FFFFF) |
-      ((static_cast<std::uint64_t>(i.y) & 0x1FFFFF) << 21) |
-      ((static_cast<std::uint64_t>(i.z) & 0x1FFFFF) << 42);
+           ((static_cast<std::uint64_t>(i.y) & 0x1FFFFF) << 21) |
+           ((static_cast<std::uint64_t>(i.z) & 0x1FFFFF) << 42);
   }
 };
 
@@ -201,14 +201,12 @@ FaceOverlaps MatchNonConformingFaces(const double* points, const std::vector<Ope
   const vtkIdType count = static_cast<vtkIdType>(faces.size());
   std::vector<FaceGeometry> geometry(count);
   FaceGrid grid;
-  double diameters = 0;
   vtkIdType measured = 0;
   for (vtkIdType i = 0; i < count; ++i)
   {
     geometry[i] = Measure(points, faces[i]);
     if (geometry[i].Planar)
     {
-      diameters += geometry[i].Diameter;
       grid.Grow = std::max(grid.Grow, 1e-5 * geometry[i].Diameter);
       grid.Origin = measured++ == 0 ? geometry[i].Lo : glm::min(grid.Origin, geometry[i].Lo);
     }
@@ -220,7 +218,16 @@ FaceOverlaps MatchNonConformingFaces(const double* points, const std::vector<Ope
     result.Offsets.assign(count + 1, 0);
     return result;
   }
-  grid.Cell = std::max(2.0 * diameters / static_cast<double>(measured), 1e-300);
+  std::vector<double> sizes;
+  for (const FaceGeometry& g : geometry)
+  {
+    if (g.Planar)
+    {
+      sizes.push_back(g.Diameter);
+    }
+  }
+  std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+  grid.Cell = std::max(2.0 * sizes[sizes.size() / 2], 1e-300);
   grid.Origin -= Vec3(grid.Cell);
   for (vtkIdType i = 0; i < count; ++i)
   {
@@ -250,8 +257,8 @@ FaceOverlaps MatchNonConformingFaces(const double* points, const std::vector<Ope
         const Vec3 lo = glm::max(gi.Lo, gj.Lo) - Vec3(grid.Grow);
         const Vec3 hi = glm::min(gi.Hi, gj.Hi) + Vec3(grid.Grow);
         if (faces[i].Cell == faces[j].Cell || glm::any(glm::greaterThan(lo, hi)) ||
-          FaceGrid::Key(grid.Index(lo)) != bucket.first ||
-          !FaceEachOther(points, faces[j], gi, gj) || !FaceEachOther(points, faces[i], gj, gi))
+            FaceGrid::Key(grid.Index(lo)) != bucket.first ||
+            !FaceEachOther(points, faces[j], gi, gj) || !FaceEachOther(points, faces[i], gj, gi))
         {
           continue;
         }
@@ -290,7 +297,8 @@ FaceOverlaps MatchNonConformingFaces(const double* points, const std::vector<Ope
   }
   for (vtkIdType i = 0; i < count; ++i)
   {
-    std::sort(result.Across.begin() + result.Offsets[i], result.Across.begin() + result.Offsets[i + 1]);
+    std::sort(
+      result.Across.begin() + result.Offsets[i], result.Across.begin() + result.Offsets[i + 1]);
   }
   return result;
 }

@@ -83,10 +83,9 @@ struct NonConformingLinks
  * covered stays a boundary face too (rays enter the mesh where it is
  * exposed).
  */
-template <typename Code, typename Slot>
-NonConformingLinks LinkNonConformingFaces(const double* points,
-  const std::vector<OpenFace>& faces, Code code, Slot slot, int listBase, int maximumPieces,
-  std::vector<int>& neighbors)
+template<typename Code, typename Slot>
+NonConformingLinks LinkNonConformingFaces(const double* points, const std::vector<OpenFace>& faces,
+  Code code, Slot slot, int listBase, int maximumPieces, std::vector<int>& neighbors)
 {
   const FaceOverlaps overlaps = MatchNonConformingFaces(points, faces);
   NonConformingLinks links;

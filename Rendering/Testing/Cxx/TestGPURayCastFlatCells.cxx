@@ -75,9 +75,9 @@ int ExpectFlat(const char* what, vtkUnstructuredGrid* grid, vtkIdType flat)
             << textures->GetNumberOfHexahedra() << ", boundary triangles "
             << textures->GetBoundaryFaces().size() << "\n";
   return textures->GetNumberOfFlatHexahedra() == flat &&
-      textures->GetNumberOfHexahedra() == grid->GetNumberOfCells()
-    ? 0
-    : Fail(std::string(what) + ": flat cells not kept and counted");
+             textures->GetNumberOfHexahedra() == grid->GetNumberOfCells()
+           ? 0
+           : Fail(std::string(what) + ": flat cells not kept and counted");
 }
 }
 
@@ -103,8 +103,8 @@ int TestGPURayCastFlatCells(int, char*[])
       { 2.0, 1.3, 2.4 } },
     { "pyramids flattened inside", Pinched(block, 3 * h, 2 * h, true, false), 6 * N * N,
       { 2.0, 1.3, 2.4 } },
-    { "hexahedra flattened at the boundary, mirrored, from below", Pinched(block, h, 0, false, true),
-      N * N, { -2.0, 1.3, -1.6 } },
+    { "hexahedra flattened at the boundary, mirrored, from below",
+      Pinched(block, h, 0, false, true), N * N, { -2.0, 1.3, -1.6 } },
   };
   for (const Case& c : cases)
   {

@@ -135,8 +135,9 @@ vtkSmartPointer<vtkUnstructuredGrid> FaceNextToFour()
   GridBuilder b;
   const P v0 = { 1, 0, 0 }, v1 = { 0, 1, 0 }, v2 = { 0, 0, 1 }, v3 = { 1, 1, 1 };
   b.Tetra({ v0, v1, v2, P{ 0, 0, 0 } });
-  auto mid = [](const P& a, const P& c)
-  { return P{ (a[0] + c[0]) / 2, (a[1] + c[1]) / 2, (a[2] + c[2]) / 2 }; };
+  auto mid = [](const P& a, const P& c) {
+    return P{ (a[0] + c[0]) / 2, (a[1] + c[1]) / 2, (a[2] + c[2]) / 2 };
+  };
   const P m01 = mid(v0, v1), m02 = mid(v0, v2), m03 = mid(v0, v3), m12 = mid(v1, v2),
           m13 = mid(v1, v3), m23 = mid(v2, v3);
   b.Tetra({ v0, m01, m02, m03 });
@@ -219,8 +220,8 @@ int TestGPURayCastNonConforming(int argc, char* argv[])
     scene.Show(mapper, grid, { 3.5, 2.6, 2.2 }, { 0.8, 0.5, 0.5 });
     mapper->SetHexahedronModeToAccurate();
     scene.Window->Render();
-    const auto check = ppiray_test::CheckPixels(scene.Renderer, grid, scene.Property,
-      ppiray_test::ReadRGB(scene.Window), Size, Size);
+    const auto check = ppiray_test::CheckPixels(
+      scene.Renderer, grid, scene.Property, ppiray_test::ReadRGB(scene.Window), Size, Size);
     std::cout << name << ": " << NonConformingFaces(grid) << " faces linked, peels "
               << mapper->GetStatistics()->GetNumberOfPeels() << ", ";
     errors += ppiray_test::ExpectReference(name.c_str(), check, 10000);
