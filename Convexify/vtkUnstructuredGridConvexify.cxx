@@ -2,6 +2,8 @@
 
 #include "ppirayBoundaryFaceLinks.h"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
 #include "ppirayConformingTetrahedra.h"
 #include "ppirayGridGeometryKey.h"
 #include "ppirayImaginaryTetrahedra.h"
@@ -17,6 +19,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkStaticPointLocator.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -59,28 +62,38 @@ void ExtendWithMinimum(vtkDataSetAttributes* data, vtkIdType count)
   }
 }
 
-// `grid`'s cells with every point id replaced by the first id at the same
-// place, so that cells meeting at a seam without sharing point ids (an
-// O-grid's cut) share them; nullptr when no two points coincide (or the grid
-// has polyhedra, whose faces would need the same). `merged`: ids replaced.
-vtkSmartPointer<vtkUnstructuredGrid> WithCoincidentPointsShared(
-  vtkUnstructuredGrid* grid, vtkIdType& merged)
+// The first id of the points `grid`'s point `i` is taken as one with: points
+// within `tolerance` of each other (vtkStaticPointLocator's merge, in point
+// order, so the result does not depend on threads); `merged`: ids replaced.
+std::vector<vtkIdType> PointsTakenAsOne(
+  vtkUnstructuredGrid* grid, double tolerance, vtkIdType& merged)
 {
-  merged = 0;
   const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
   std::vector<vtkIdType> first(numberOfPoints);
-  std::map<std::array<double, 3>, vtkIdType> at;
+  vtkNew<vtkStaticPointLocator> locator;
+  locator->SetDataSet(grid);
+  locator->SetTraversalOrder(vtkStaticPointLocator::POINT_ORDER);
+  locator->BuildLocator();
+  locator->MergePoints(tolerance, first.data());
+  merged = 0;
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
-    std::array<double, 3> x;
-    grid->GetPoint(i, x.data());
-    first[i] = at.emplace(x, i).first->second;
+    while (first[first[i]] != first[i])
+    {
+      first[i] = first[first[i]];
+    }
     merged += first[i] != i ? 1 : 0;
   }
-  if (merged == 0)
-  {
-    return nullptr;
-  }
+  return first;
+}
+
+// `grid`'s cells with every point id replaced by `first[id]`, so that cells
+// meeting at a seam without sharing point ids (an O-grid's cut, a clip's
+// points computed twice) share them; nullptr for a grid with polyhedra
+// (their faces would need the same: their split's ids are replaced after).
+vtkSmartPointer<vtkUnstructuredGrid> WithPointIdsReplaced(
+  vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& first)
+{
   vtkNew<vtkCellArray> cells;
   vtkNew<vtkUnsignedCharArray> types;
   types->SetNumberOfValues(grid->GetNumberOfCells());
@@ -89,7 +102,6 @@ vtkSmartPointer<vtkUnstructuredGrid> WithCoincidentPointsShared(
   {
     if (grid->GetCellType(c) == VTK_POLYHEDRON)
     {
-      merged = 0;
       return nullptr;
     }
     vtkIdType npts;
@@ -110,6 +122,46 @@ vtkSmartPointer<vtkUnstructuredGrid> WithCoincidentPointsShared(
   return shared;
 }
 
+// The split's tetrahedra that bound volume: ids through `first` (grid points;
+// the polyhedra's added points keep theirs), those left with a repeated id
+// or zero volume (exact orientation of `xyz`) removed. Returns how many;
+// `leftOut[c]`: whether cell c had tetrahedra and none is kept.
+vtkIdType KeepSolidTetrahedra(ppiray::TetrahedralSplit& split, const std::vector<vtkIdType>& first,
+  const std::vector<double>& xyz, std::vector<unsigned char>& leftOut)
+{
+  for (vtkIdType c : split.CellIds)
+  {
+    leftOut[c] = 1;
+  }
+  using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  auto point = [&xyz](vtkIdType id)
+  { return Point(xyz[3 * id], xyz[3 * id + 1], xyz[3 * id + 2]); };
+  const vtkIdType numberOfPoints = static_cast<vtkIdType>(first.size());
+  const std::size_t count = split.CellIds.size();
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < count; ++t)
+  {
+    vtkIdType* tet = split.Tets.data() + 4 * t;
+    for (int v = 0; v < 4; ++v)
+    {
+      tet[v] = tet[v] < numberOfPoints ? first[tet[v]] : tet[v];
+    }
+    if (tet[0] == tet[1] || tet[0] == tet[2] || tet[0] == tet[3] || tet[1] == tet[2] ||
+        tet[1] == tet[3] || tet[2] == tet[3] ||
+        CGAL::orientation(point(tet[0]), point(tet[1]), point(tet[2]), point(tet[3])) ==
+          CGAL::COPLANAR)
+    {
+      continue;
+    }
+    std::copy(tet, tet + 4, split.Tets.data() + 4 * kept);
+    leftOut[split.CellIds[t]] = 0;
+    split.CellIds[kept++] = split.CellIds[t];
+  }
+  split.Tets.resize(4 * kept);
+  split.CellIds.resize(kept);
+  return static_cast<vtkIdType>(count - kept);
+}
+
 bool AllFinite(vtkPoints* points)
 {
   double p[3];
@@ -125,12 +177,12 @@ bool AllFinite(vtkPoints* points)
 }
 // The boundary triangles of the conforming split (faces with no
 // neighbour), wound outward, and the input cell each belongs to.
-void OutwardBoundaryTriangles(vtkUnstructuredGrid* grid, const ppiray::TetrahedralSplit& split,
-  std::vector<vtkIdType>& triangles, std::vector<vtkIdType>& owner)
+void OutwardBoundaryTriangles(vtkIdType numberOfPoints, const std::vector<double>& xyz,
+  const ppiray::TetrahedralSplit& split, std::vector<vtkIdType>& triangles,
+  std::vector<vtkIdType>& owner)
 {
   vtkNew<vtkUnstructuredGridCellAdjacency> adjacency;
-  adjacency->Build(
-    grid->GetNumberOfPoints(), split.Tets.data(), static_cast<vtkIdType>(split.CellIds.size()));
+  adjacency->Build(numberOfPoints, split.Tets.data(), static_cast<vtkIdType>(split.CellIds.size()));
   const std::vector<vtkIdType>& faces = adjacency->GetBoundaryFaces();
   const vtkIdType numberOfFaces = adjacency->GetNumberOfBoundaryFaces();
   triangles.assign(3 * numberOfFaces, 0);
@@ -145,12 +197,8 @@ void OutwardBoundaryTriangles(vtkUnstructuredGrid* grid, const ppiray::Tetrahedr
       triangles[3 * k + v] = tet[vtkUnstructuredGridCellAdjacency::FaceVertex(f, v)];
     }
     // Wound outward (FaceVertex's order is, for a positive tetrahedron).
-    double p[4][3];
-    for (int v = 0; v < 4; ++v)
-    {
-      grid->GetPoints()->GetPoint(tet[v], p[v]);
-    }
-    if (vtkUnstructuredGridCellAdjacency::SignedVolume6(p[0], p[1], p[2], p[3]) < 0)
+    if (vtkUnstructuredGridCellAdjacency::SignedVolume6(
+          &xyz[3 * tet[0]], &xyz[3 * tet[1]], &xyz[3 * tet[2]], &xyz[3 * tet[3]]) < 0)
     {
       std::swap(triangles[3 * k + 1], triangles[3 * k + 2]);
     }
@@ -158,15 +206,51 @@ void OutwardBoundaryTriangles(vtkUnstructuredGrid* grid, const ppiray::Tetrahedr
   }
 }
 
-// The output: `grid`, then the fill's new points and imaginary tetrahedra,
-// hidden, with the input cells across their faces (BoundaryCellArrayName);
-// point and cell arrays extended with their minimum.
-void AppendImaginaryCells(vtkUnstructuredGrid* grid, const ppiray::ImaginaryTetrahedra& fill,
-  const std::vector<vtkIdType>& owner, vtkUnstructuredGrid* output)
+double BoundsDiagonal(const double b[6])
+{
+  return std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+}
+
+// The box around the points `tets` use, inflated by `margin` times its
+// diagonal on every side (by `margin` where the points are one point).
+void InflatedBox(
+  const std::vector<double>& xyz, const std::vector<vtkIdType>& tets, double margin, double box[6])
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    box[2 * a] = std::numeric_limits<double>::max();
+    box[2 * a + 1] = -std::numeric_limits<double>::max();
+  }
+  for (vtkIdType id : tets)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      box[2 * a] = std::min(box[2 * a], xyz[3 * id + a]);
+      box[2 * a + 1] = std::max(box[2 * a + 1], xyz[3 * id + a]);
+    }
+  }
+  const double diagonal = BoundsDiagonal(box);
+  const double reach = margin * (diagonal > 0.0 ? diagonal : 1.0);
+  for (int a = 0; a < 3; ++a)
+  {
+    box[2 * a] -= reach;
+    box[2 * a + 1] += reach;
+  }
+}
+
+// The output: `grid`, then the points its polyhedra's split added (`added`,
+// xyz), the fill's new points and imaginary tetrahedra, hidden, with the
+// input cells across their faces (BoundaryCellArrayName; LeftOutOfFill on
+// the input cells `leftOut`); point and cell arrays extended with their
+// minimum.
+void AppendImaginaryCells(vtkUnstructuredGrid* grid, const std::vector<double>& added,
+  const ppiray::ImaginaryTetrahedra& fill, const std::vector<vtkIdType>& owner,
+  const std::vector<unsigned char>& leftOut, vtkUnstructuredGrid* output)
 {
   output->DeepCopy(grid);
   vtkPoints* points = output->GetPoints();
-  if (!fill.NewPoints.empty() && points->GetDataType() != VTK_DOUBLE)
+  if ((!fill.NewPoints.empty() || !added.empty()) && points->GetDataType() != VTK_DOUBLE)
   {
     // New points lie on the input's faces: stored in float they would be
     // off them by float rounding, enough to break the faces' conformity.
@@ -179,6 +263,10 @@ void AppendImaginaryCells(vtkUnstructuredGrid* grid, const ppiray::ImaginaryTetr
     }
     output->SetPoints(doubles);
     points = doubles;
+  }
+  for (std::size_t i = 0; i < added.size(); i += 3)
+  {
+    points->InsertNextPoint(&added[i]);
   }
   for (const auto& p : fill.NewPoints)
   {
@@ -208,6 +296,10 @@ void AppendImaginaryCells(vtkUnstructuredGrid* grid, const ppiray::ImaginaryTetr
   across->SetNumberOfComponents(4);
   across->SetNumberOfTuples(numberOfCells + numberOfImaginary);
   across->Fill(-1);
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  {
+    across->SetTypedComponent(c, 0, leftOut[c] ? ppiray::LeftOutOfFill : -1);
+  }
   for (vtkIdType t = 0; t < numberOfImaginary; ++t)
   {
     for (int f = 0; f < 4; ++f)
@@ -243,6 +335,7 @@ struct vtkUnstructuredGridConvexify::vtkInternals
   vtkNew<vtkUnstructuredGrid> Last;
   bool Valid = false;
   double Margin = 0.0;
+  double Tolerance = 0.0;
 };
 
 //------------------------------------------------------------------------------
@@ -273,7 +366,8 @@ int vtkUnstructuredGridConvexify::RequestData(
   // The geometry of the last fill (its counts still stand): only the arrays are new.
   vtkInternals& last = *this->Internals;
   const bool sameGeometry = last.Key.Update(input) != ppiray::GridGeometryKey::Match::Changed;
-  if (sameGeometry && last.Valid && last.Margin == this->Margin)
+  if (sameGeometry && last.Valid && last.Margin == this->Margin &&
+      last.Tolerance == this->Tolerance)
   {
     vtkNew<vtkTimerLog> reuse;
     reuse->StartTimer();
@@ -287,6 +381,7 @@ int vtkUnstructuredGridConvexify::RequestData(
   this->NumberOfSteinerPoints = 0;
   this->NumberOfAddedPoints = 0;
   this->NumberOfMergedPoints = 0;
+  this->NumberOfFlatTetrahedra = 0;
   this->NumberOfDroppedTriangles = 0;
   this->ExecutionTime = 0.0;
   vtkNew<vtkTimerLog> timer;
@@ -315,10 +410,16 @@ int vtkUnstructuredGridConvexify::RequestData(
     grid = input;
   }
 
-  // The fill sees the mesh with coincident points shared (the output keeps
-  // the input's cells; imaginary cells use the first id at each place).
+  // The fill sees the mesh with points within the tolerance taken as one and
+  // without zero-volume tetrahedra (the output keeps the input's cells;
+  // imaginary cells use the first id at each place).
+  double bounds[6];
+  grid->GetBounds(bounds);
   vtkIdType mergedPoints = 0;
-  vtkSmartPointer<vtkUnstructuredGrid> sealed = WithCoincidentPointsShared(grid, mergedPoints);
+  const std::vector<vtkIdType> first =
+    PointsTakenAsOne(grid, this->Tolerance * BoundsDiagonal(bounds), mergedPoints);
+  vtkSmartPointer<vtkUnstructuredGrid> sealed =
+    mergedPoints > 0 ? WithPointIdsReplaced(grid, first) : nullptr;
   ppiray::TetrahedralSplit split;
   ppiray::SplitIntoTetrahedra(sealed ? sealed.Get() : grid.Get(), false, split);
   if (split.GetNumberOfUnsupportedCells() > 0)
@@ -327,49 +428,31 @@ int vtkUnstructuredGridConvexify::RequestData(
                     << " cells that are not linear or quadratic 3D cells are left out: imaginary "
                        "cells may fill their space.");
   }
-  const vtkIdType numberOfTets = static_cast<vtkIdType>(split.CellIds.size());
-  if (numberOfTets == 0)
+  // The points the split uses: the grid's, then the polyhedra's added ones.
+  const vtkIdType numberOfPoints = grid->GetNumberOfPoints() + split.Added.GetNumberOfPoints();
+  std::vector<double> xyz(3 * grid->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
   {
-    vtkWarningMacro("No 3D cells: nothing to convexify.");
+    grid->GetPoints()->GetPoint(i, &xyz[3 * i]);
+  }
+  xyz.insert(xyz.end(), split.Added.Points.begin(), split.Added.Points.end());
+  this->NumberOfMergedPoints = mergedPoints;
+  std::vector<unsigned char> leftOut(grid->GetNumberOfCells(), 0);
+  this->NumberOfFlatTetrahedra = KeepSolidTetrahedra(split, first, xyz, leftOut);
+  if (split.CellIds.empty())
+  {
+    vtkWarningMacro("No 3D cells with volume: nothing to convexify.");
     return 1;
   }
   this->UpdateProgress(0.05);
 
   // The boundary: triangles of the conforming split with no neighbour.
-  const vtkIdType numberOfPoints = grid->GetNumberOfPoints();
   std::vector<vtkIdType> triangles, owner;
-  OutwardBoundaryTriangles(grid, split, triangles, owner);
-
-  // The box: the bounds of the points the cells use, inflated.
-  std::vector<double> xyz(3 * numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    grid->GetPoints()->GetPoint(i, &xyz[3 * i]);
-  }
-  double box[6] = { std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max() };
-  for (vtkIdType id : split.Tets)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      box[2 * a] = std::min(box[2 * a], xyz[3 * id + a]);
-      box[2 * a + 1] = std::max(box[2 * a + 1], xyz[3 * id + a]);
-    }
-  }
-  const double diagonal =
-    std::sqrt((box[1] - box[0]) * (box[1] - box[0]) + (box[3] - box[2]) * (box[3] - box[2]) +
-              (box[5] - box[4]) * (box[5] - box[4]));
-  const double margin = this->Margin * (diagonal > 0.0 ? diagonal : 1.0);
-  for (int a = 0; a < 3; ++a)
-  {
-    box[2 * a] -= margin;
-    box[2 * a + 1] += margin;
-  }
-
+  OutwardBoundaryTriangles(numberOfPoints, xyz, split, triangles, owner);
+  double box[6];
+  InflatedBox(xyz, split.Tets, this->Margin, box);
   const ppiray::ImaginaryTetrahedra fill = ppiray::FillBoxAroundSurface(
     xyz, triangles, box, [this](double done) { this->UpdateProgress(0.1 + 0.8 * done); });
-  this->NumberOfMergedPoints = mergedPoints;
   this->NumberOfDroppedTriangles = fill.DroppedTriangles;
   if (!fill.Error.empty())
   {
@@ -377,14 +460,16 @@ int vtkUnstructuredGridConvexify::RequestData(
     return 1;
   }
 
-  AppendImaginaryCells(grid, fill, owner, output);
+  AppendImaginaryCells(grid, split.Added.Points, fill, owner, leftOut, output);
   last.Last->ShallowCopy(output);
   last.Valid = true;
   last.Margin = this->Margin;
+  last.Tolerance = this->Tolerance;
 
   this->NumberOfImaginaryCells = static_cast<vtkIdType>(fill.Tets.size() / 4);
   this->NumberOfSteinerPoints = fill.SteinerPoints;
-  this->NumberOfAddedPoints = static_cast<vtkIdType>(fill.NewPoints.size());
+  this->NumberOfAddedPoints =
+    split.Added.GetNumberOfPoints() + static_cast<vtkIdType>(fill.NewPoints.size());
   timer->StopTimer();
   this->ExecutionTime = timer->GetElapsedTime();
   return 1;
@@ -398,7 +483,9 @@ void vtkUnstructuredGridConvexify::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfImaginaryCells: " << this->NumberOfImaginaryCells << "\n";
   os << indent << "NumberOfSteinerPoints: " << this->NumberOfSteinerPoints << "\n";
   os << indent << "NumberOfAddedPoints: " << this->NumberOfAddedPoints << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "NumberOfMergedPoints: " << this->NumberOfMergedPoints << "\n";
+  os << indent << "NumberOfFlatTetrahedra: " << this->NumberOfFlatTetrahedra << "\n";
   os << indent << "NumberOfDroppedTriangles: " << this->NumberOfDroppedTriangles << "\n";
   os << indent << "ExecutionTime: " << this->ExecutionTime << "\n";
 }

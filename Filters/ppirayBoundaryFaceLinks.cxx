@@ -71,6 +71,30 @@ double RelativeDistance(const Triangle& t, const dvec3& x)
 namespace ppiray
 {
 //------------------------------------------------------------------------------
+void RemoveCellsLeftOutOfFill(
+  vtkUnstructuredGrid* grid, std::vector<vtkIdType>& tets, std::vector<vtkIdType>& cellIds)
+{
+  vtkDataArray* across = grid->GetCellData()->GetArray(BoundaryCellArrayName);
+  if (!across || across->GetNumberOfComponents() != 4)
+  {
+    return;
+  }
+  size_t kept = 0;
+  for (size_t t = 0; t < cellIds.size(); ++t)
+  {
+    const vtkIdType c = cellIds[t];
+    if (c < across->GetNumberOfTuples() && across->GetComponent(c, 0) == LeftOutOfFill)
+    {
+      continue;
+    }
+    std::copy_n(tets.data() + 4 * t, 4, tets.data() + 4 * kept);
+    cellIds[kept++] = c;
+  }
+  tets.resize(4 * kept);
+  cellIds.resize(kept);
+}
+
+//------------------------------------------------------------------------------
 BoundaryFaceLinks LinkBoundaryFaces(vtkUnstructuredGrid* grid, const std::vector<vtkIdType>& tets,
   const std::vector<vtkIdType>& cellIds, const double* local,
   const std::vector<unsigned char>& open, const std::vector<unsigned char>& flat)

@@ -30,6 +30,17 @@ namespace ppiray
 {
 /// The cell array that names the input cell across each imaginary face.
 constexpr const char* BoundaryCellArrayName = "ppirayBoundaryCell";
+/// Its first component on an input cell that bounds nothing (zero volume):
+/// the fill was made without it.
+constexpr vtkIdType LeftOutOfFill = -2;
+
+/**
+ * The tetrahedra `tets` (4 point ids each) of `grid`'s cells `cellIds` but
+ * those of cells the fill was made without (LeftOutOfFill): they have no
+ * volume, and the imaginary faces name the cells beside them.
+ */
+PPIRAYFILTERS_EXPORT void RemoveCellsLeftOutOfFill(
+  vtkUnstructuredGrid* grid, std::vector<vtkIdType>& tets, std::vector<vtkIdType>& cellIds);
 
 struct BoundaryFaceLinks
 {

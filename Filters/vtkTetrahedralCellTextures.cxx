@@ -59,6 +59,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   split.Tets.swap(this->Tets); // the last build's storage, reused (no fresh pages)
   split.CellIds.swap(this->CellIds);
   ppiray::SplitIntoTetrahedra(grid, /*tetrahedraOnly=*/false, split);
+  ppiray::RemoveCellsLeftOutOfFill(grid, split.Tets, split.CellIds);
   this->NumberOfUnsupportedCells = split.GetNumberOfUnsupportedCells();
   this->NumberOfSplitCells = split.NumberOfSplitCells;
   this->NumberOfQuadraticCells = split.NumberOfQuadraticCells;

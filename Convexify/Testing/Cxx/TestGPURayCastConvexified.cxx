@@ -8,7 +8,9 @@
 // Scenes: a block with a tunnel beside a second block (the non-convex test's
 // mesh), a cube with a cavity, two parts across a thin gap, the benchmark's
 // carved wavelet (graded holes), three cavities in a row (a lattice: 4 peels,
-// a fill with Steiner points).
+// a fill with Steiner points), an image clipped and tetrahedralized as
+// ParaView's filters do it (zero-volume cells, faces of three cells, points
+// a few roundings apart, two parts; PPIRayClippedImage.h).
 // NON_CONVEX_AUTOMATIC on each scene, three frames: the first peels; where
 // it took at least 4 peels the second is convexified (the trial), and the
 // third too where the fill is small (imaginary cells at most the cells,
@@ -18,6 +20,7 @@
 // arrays (a time series' step), keeps the third's choice. A lattice of hexahedra with holes,
 // marched natively with many peels, is peeled without trying the fill.
 
+#include "PPIRayClippedImage.h"
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
 #include "vtkCamera.h"
@@ -239,6 +242,13 @@ int TestGPURayCastConvexified(int argc, char* argv[])
     double range[2];
     grid->GetPointData()->GetScalars()->GetRange(range);
     errors += Compare("graded_holes.vtu", grid, { 1.0, 0.6, 1.4 }, range[0], range[1]);
+  }
+  {
+    auto grid = ppiray_test::ClippedImage(6);
+    double range[2];
+    grid->GetPointData()->GetScalars()->GetRange(range);
+    errors +=
+      Compare("image clipped and tetrahedralized", grid, { 0.3, 1.0, 0.4 }, range[0], range[1]);
   }
   {
     // Hexahedra marched natively, three cavities in a row (4 peels): peeled,
