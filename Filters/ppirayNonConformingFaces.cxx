@@ -5,6 +5,7 @@
 #include <glm/vec3.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
@@ -301,6 +302,61 @@ FaceOverlaps MatchNonConformingFaces(const double* points, const std::vector<Ope
       result.Across.begin() + result.Offsets[i], result.Across.begin() + result.Offsets[i + 1]);
   }
   return result;
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkIdType> PairCoincidentFaces(const double* points, const std::vector<OpenFace>& faces)
+{
+  // Key: the face's distinct corners' places, sorted (a triangle's fourth is +inf).
+  using Place = std::array<double, 3>;
+  using Key = std::array<Place, 4>;
+  const vtkIdType count = static_cast<vtkIdType>(faces.size());
+  std::vector<Key> keys(count);
+  std::vector<Vec3> areas(count, Vec3(0.0));
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const OpenFace& face = faces[i];
+    std::array<vtkIdType, 6> ids = face.Points;
+    std::sort(ids.begin(), ids.begin() + 3 * face.Triangles);
+    const auto end = std::unique(ids.begin(), ids.begin() + 3 * face.Triangles);
+    keys[i].fill(Place{ HUGE_VAL, HUGE_VAL, HUGE_VAL });
+    for (auto id = ids.begin(); id != end && id - ids.begin() < 4; ++id)
+    {
+      keys[i][id - ids.begin()] = { points[3 * *id], points[3 * *id + 1], points[3 * *id + 2] };
+    }
+    std::sort(keys[i].begin(), keys[i].end());
+    for (int t = 0; t < face.Triangles; ++t)
+    {
+      const Vec3 a = PointOf(points, face.Points[3 * t]),
+                 b = PointOf(points, face.Points[3 * t + 1]),
+                 c = PointOf(points, face.Points[3 * t + 2]);
+      areas[i] += glm::cross(b - a, c - a);
+    }
+  }
+  std::vector<vtkIdType> order(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    order[i] = i;
+  }
+  std::sort(
+    order.begin(), order.end(), [&](vtkIdType a, vtkIdType b) { return keys[a] < keys[b]; });
+  std::vector<vtkIdType> partner(count, -1);
+  for (vtkIdType k = 0; k < count;)
+  {
+    vtkIdType n = 1;
+    while (k + n < count && keys[order[k + n]] == keys[order[k]])
+    {
+      ++n;
+    }
+    const vtkIdType a = order[k], b = order[k + 1 < count ? k + 1 : k];
+    if (n == 2 && faces[a].Cell != faces[b].Cell && glm::dot(areas[a], areas[b]) < 0.0)
+    {
+      partner[a] = b;
+      partner[b] = a;
+    }
+    k += n;
+  }
+  return partner;
 }
 
 //------------------------------------------------------------------------------

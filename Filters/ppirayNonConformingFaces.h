@@ -14,7 +14,9 @@
  * (the area of the intersection of their triangles projected on the plane,
  * by clipping, above 1e-6 of the smaller face's area). A face is covered
  * when its overlaps add up to its area (within 1e-5): a ray leaving it
- * anywhere enters one of them. Non-planar faces (curved cells split by
+ * anywhere enters one of them. Faces at exactly the same places (a seam's
+ * duplicated points) are paired first, planar or not
+ * (PairCoincidentFaces()). Other non-planar faces (curved cells split by
  * different diagonals on each side) are not matched: they are not
  * coplanar.
  */
@@ -53,6 +55,16 @@ PPIRAYFILTERS_EXPORT FaceOverlaps MatchNonConformingFaces(
   const double* points, const std::vector<OpenFace>& faces);
 
 /**
+ * Per open face, the other open face whose distinct corners are at the same
+ * places (the same face through duplicated points: a seam), of another cell
+ * and facing it (area vectors opposite); -1 where there is none or more than
+ * one. Planar or not: the two sides may split a quadrilateral along
+ * different diagonals (their ids differ), which the caller then aligns.
+ */
+PPIRAYFILTERS_EXPORT std::vector<vtkIdType> PairCoincidentFaces(
+  const double* points, const std::vector<OpenFace>& faces);
+
+/**
  * Appends a list of neighbour codes to a neighbour array (their number n,
  * then the codes, padded with -1 to whole texels of 4) and returns the code
  * that names it: `listBase` + its first texel.
@@ -65,6 +77,8 @@ struct NonConformingLinks
 {
   /** Open faces linked to the faces across them (covered or not). */
   vtkIdType Faces = 0;
+  /** Of those, faces at the same places as the one across (PairCoincidentFaces()). */
+  vtkIdType Coincident = 0;
   /** Of those, the faces that need a list (more than one face across, or not covered). */
   vtkIdType Lists = 0;
   /** The longest list. */
@@ -74,8 +88,10 @@ struct NonConformingLinks
 };
 
 /**
- * Links each open face to the open faces across it
- * (MatchNonConformingFaces()): a face that one face covers gets that face's
+ * Links each open face to the open faces across it: a face at the same places
+ * as another (PairCoincidentFaces()) gets its code, and `paired(i, j)` is
+ * called for each such pair, both ways; of the others
+ * (MatchNonConformingFaces()), a face that one face covers gets that face's
  * code, any other a list of their codes (AppendFaceList(); the march takes
  * the one the exit point lies in, or none: listed_faces_fs.glsl), at most
  * `maximumPieces` (else left open). `code(i)`: the neighbour code that
@@ -83,32 +99,50 @@ struct NonConformingLinks
  * covered stays a boundary face too (rays enter the mesh where it is
  * exposed).
  */
-template<typename Code, typename Slot>
+template<typename Code, typename Slot, typename Paired>
 NonConformingLinks LinkNonConformingFaces(const double* points, const std::vector<OpenFace>& faces,
-  Code code, Slot slot, int listBase, int maximumPieces, std::vector<int>& neighbors)
+  Code code, Slot slot, Paired paired, int listBase, int maximumPieces, std::vector<int>& neighbors)
 {
-  const FaceOverlaps overlaps = MatchNonConformingFaces(points, faces);
   NonConformingLinks links;
   links.Covered.assign(faces.size(), 0);
-  std::vector<int> codes;
+  const std::vector<vtkIdType> partner = PairCoincidentFaces(points, faces);
+  std::vector<OpenFace> rest;
+  std::vector<vtkIdType> restIndex; // face of each of the rest
   for (vtkIdType i = 0; i < static_cast<vtkIdType>(faces.size()); ++i)
   {
-    const vtkIdType first = overlaps.Offsets[i], n = overlaps.Offsets[i + 1] - first;
+    if (partner[i] < 0)
+    {
+      rest.push_back(faces[i]);
+      restIndex.push_back(i);
+      continue;
+    }
+    neighbors[slot(i)] = code(partner[i]);
+    links.Covered[i] = 1;
+    ++links.Faces;
+    ++links.Coincident;
+    paired(i, partner[i]);
+  }
+  const FaceOverlaps overlaps = MatchNonConformingFaces(points, rest);
+  std::vector<int> codes;
+  for (vtkIdType r = 0; r < static_cast<vtkIdType>(rest.size()); ++r)
+  {
+    const vtkIdType i = restIndex[r];
+    const vtkIdType first = overlaps.Offsets[r], n = overlaps.Offsets[r + 1] - first;
     if (n == 0 || n > maximumPieces)
     {
       continue;
     }
     ++links.Faces;
-    links.Covered[i] = overlaps.Covered[i];
-    if (n == 1 && overlaps.Covered[i])
+    links.Covered[i] = overlaps.Covered[r];
+    if (n == 1 && overlaps.Covered[r])
     {
-      neighbors[slot(i)] = code(overlaps.Across[first]);
+      neighbors[slot(i)] = code(restIndex[overlaps.Across[first]]);
       continue;
     }
     codes.clear();
     for (vtkIdType k = first; k < first + n; ++k)
     {
-      codes.push_back(code(overlaps.Across[k]));
+      codes.push_back(code(restIndex[overlaps.Across[k]]));
     }
     neighbors[slot(i)] = AppendFaceList(neighbors, codes, listBase);
     ++links.Lists;

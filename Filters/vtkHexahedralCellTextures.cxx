@@ -23,6 +23,9 @@
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridCellAdjacency.h"
 
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/vec3.hpp>
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -814,6 +817,7 @@ void vtkHexahedralCellTextures::LinkNonConformingFaces(std::vector<vtkIdType>& b
     [&](vtkIdType i)
     { return NeighborCode(owners[i] / 6, static_cast<int>(owners[i] % 6), false, false); },
     [&](vtkIdType i) { return static_cast<size_t>(8 * (owners[i] / 6) + owners[i] % 6); },
+    [&](vtkIdType i, vtkIdType j) { this->SplitAlongLinkedDiagonal(owners[i], owners[j]); },
     SplitFace(), MaximumPieces(), this->Neighbors);
   std::vector<vtkIdType> covered;
   for (size_t i = 0; i < faces.size(); ++i)
@@ -829,6 +833,38 @@ void vtkHexahedralCellTextures::LinkNonConformingFaces(std::vector<vtkIdType>& b
     boundary.end());
   this->NumberOfNonConformingFaces = links.Faces;
   this->MaximumPiecesPerFace = std::max(this->MaximumPiecesPerFace, links.MaximumPieces);
+}
+
+//------------------------------------------------------------------------------
+void vtkHexahedralCellTextures::SplitAlongLinkedDiagonal(vtkIdType a, vtkIdType b)
+{
+  const vtkIdType ha = a / 6, hb = b / 6;
+  const int fa = static_cast<int>(a % 6), fb = static_cast<int>(b % 6);
+  if (a < b || ppiray::FaceSize(this->Kinds[ha], fa) != 4 ||
+      ppiray::FaceSize(this->Kinds[hb], fb) != 4)
+  {
+    return;
+  }
+  auto corner = [this](vtkIdType h, int f, int v)
+  {
+    const int* q = ppiray::LinearCellKindOf(this->Kinds[h]).Face[f];
+    return glm::make_vec3(this->LocalPoints.data() + 3 * this->CornerIds[8 * h + q[v]]);
+  };
+  // b's diagonal: corners 0-2, or 1-3 where its bit is set; a's corners at
+  // its two ends are a's diagonal.
+  const int bSecond = (this->Neighbors[8 * hb + 6] >> fb) & 1;
+  int at[2] = { -1, -1 };
+  for (int e = 0; e < 2; ++e)
+  {
+    for (int v = 0; v < 4; ++v)
+    {
+      at[e] = corner(ha, fa, v) == corner(hb, fb, bSecond + 2 * e) ? v : at[e];
+    }
+  }
+  if (at[0] >= 0 && at[1] >= 0 && (at[0] - at[1] + 4) % 4 == 2)
+  {
+    this->Neighbors[8 * ha + 6] = (this->Neighbors[8 * ha + 6] & ~(1 << fa)) | ((at[0] % 2) << fa);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -269,6 +269,11 @@ protected:
   // faces across them (ppiray::LinkNonConformingFaces); removes those
   // covered.
   void LinkNonConformingFaces(std::vector<vtkIdType>& boundary);
+  // Quadrilateral a (6 h + f), linked to quadrilateral b whose corners are
+  // at the same places (a seam's duplicated points), split along the same
+  // diagonal as b where a > b: both sides then march through the same two
+  // triangles, as faces paired by point ids do.
+  void SplitAlongLinkedDiagonal(vtkIdType a, vtkIdType b);
   // Whether face f of flat cell h, wound as its kind winds it, faces the
   // first non-flat cell reached from h: a boundary face of a flat cell is
   // wound away from the cells it lies on.

@@ -351,8 +351,9 @@ void vtkTetrahedralCellTextures::LinkNonConformingFaces(const std::vector<vtkIdT
     this->LocalPoints.data(), faces,
     [&](vtkIdType i)
     { return NeighborCode(keys[i] / 4, static_cast<int>(keys[i] % 4), false, false); },
-    [&](vtkIdType i) { return static_cast<size_t>(keys[i]); }, SplitFace(), MaximumPieces(),
-    this->Neighbors);
+    [&](vtkIdType i) { return static_cast<size_t>(keys[i]); },
+    [](vtkIdType, vtkIdType) {}, // triangles: nothing to align
+    SplitFace(), MaximumPieces(), this->Neighbors);
   for (size_t i = 0; i < faces.size(); ++i)
   {
     linked[keys[i]] = linked[keys[i]] || links.Covered[i];

@@ -1,7 +1,9 @@
 """AngularSector (7,632 hexahedra and 144 pyramids, no field: a Calculator
 adds one, z x y) through ParaView's path as PPIRay Volume, the mixed mesh
 marched natively (Hexahedron Mode Accurate) and split into tetrahedra
-(Subdivide); prints the cells each path rendered, the lit pixels and the
+(Subdivide); prints the cells each path rendered, its peels, the lit
+pixels, each image against the CPU reference renderer (ppiray_pvtest's
+against_reference: ParaView's own lookup table and opacity function) and the
 difference between the two images. Writes the screenshots into the folder
 named on the command line.
 
@@ -15,6 +17,10 @@ from paraview.simple import (Calculator, CreateView, GetColorTransferFunction, L
                              Render, SaveScreenshot, Show)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Plugin",
+                                "Testing", "Python"))
+from ppiray_pvtest import against_reference  # noqa: E402
 
 root = os.environ.get("PPIRAY_DATA_ROOT", "../shared/data")
 reader = LegacyVTKReader(FileNames=[os.path.join(root, "angularsector", "AngularSector.vtk")])
@@ -45,7 +51,10 @@ for mode in ("Accurate", "Subdivide"):
     import ppiray  # noqa: F401  (the mapper's Python class, for its counters)
     mapper = display.GetClientSideObject().GetActiveRepresentation().GetActiveVolumeMapper()
     print(mode, "native cells", mapper.GetStatistics().GetNumberOfNativeCells(), "tetrahedra",
-          mapper.GetStatistics().GetNumberOfTetrahedra(), "lit pixels", int((images[mode].max(axis=1) > 0).sum()))
+          mapper.GetStatistics().GetNumberOfTetrahedra(), "peels",
+          mapper.GetStatistics().GetNumberOfPeels(), "lit pixels",
+          int((images[mode].max(axis=1) > 0).sum()), "against the reference (covered, p99, max)",
+          against_reference(view, display, path, "zy", background=[0, 0, 0]))
 diff = np.abs(images["Accurate"] - images["Subdivide"])
 print("native against split: max %.0f, p99 %.1f, pixels > 8: %d"
       % (diff.max(), np.percentile(diff, 99), int((diff.max(axis=1) > 8).sum())))
