@@ -40,6 +40,14 @@ enum TetrahedronLayout
   TetrahedronCompact = 1
 };
 
+// Where the march runs (vtkUnstructuredGridGPURayCastMapper::MarchStages).
+enum MarchStage
+{
+  MarchFragment = 0,
+  MarchCompute = 1,
+  MarchAutomatic = 2
+};
+
 // How rays that leave a non-convex mesh and enter it again are followed.
 enum NonConvexMode
 {

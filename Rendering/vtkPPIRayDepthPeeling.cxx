@@ -10,6 +10,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkPPIRayCellBuffers.h"
+#include "vtkPPIRayMarchShader.h"
 #include "vtkPPIRayPeelingStateRAII.h"
 #include "vtkSetGet.h"
 #include "vtkShaderProgram.h"
@@ -267,7 +268,7 @@ void vtkPPIRayDepthPeeling::CopyOpaqueDepth(
 
 //------------------------------------------------------------------------------
 int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& frame,
-  vtkPPIRayCellBuffers& cells, vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs,
+  vtkPPIRayCellBuffers& cells, vtkPPIRayMarchShader& march, const MarchInputs& marchInputs,
   bool& cut, vtkObject* reporter)
 {
   cut = false;
@@ -344,7 +345,7 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
 
 //------------------------------------------------------------------------------
 bool vtkPPIRayDepthPeeling::MarchToEnd(vtkOpenGLRenderWindow* context, const Frame& frame,
-  vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs)
+  vtkPPIRayMarchShader& march, const MarchInputs& marchInputs)
 {
   this->March(context, frame, march, marchInputs);
   for (int pass = 0; this->Unfinished(context); ++pass)
@@ -487,7 +488,7 @@ bool vtkPPIRayDepthPeeling::EnterAtNearPlane(
 
 //------------------------------------------------------------------------------
 void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& frame,
-  vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs)
+  vtkPPIRayMarchShader& march, const MarchInputs& marchInputs)
 {
   // From the entry cell to where the ray leaves the mesh, composited under
   // what earlier peels accumulated (ping-pong).
@@ -502,7 +503,7 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
   fbo->ActivateDrawBuffers(3);
   UseFullScreenState(state, false);
 
-  vtkShaderProgram* program = march.Program;
+  vtkShaderProgram* program = march.GetProgram();
   context->GetShaderCache()->ReadyShaderProgram(program);
   std::vector<vtkTextureObject*> textures = { this->EntryTexture, this->OpaqueDepth,
     this->Accumulated[this->Current], this->Exit[this->Current],
@@ -516,7 +517,9 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
   }
   SetRayUniforms(program, frame);
   marchInputs(program, textures);
-  march.Render();
+  vtkTextureObject* const targets[3] = { this->Accumulated[next], this->Exit[next],
+    this->Continuation[next] };
+  march.Run(frame.TargetWidth, frame.TargetHeight, targets);
   this->Times.Stop();
   for (auto* texture : textures)
   {

@@ -30,6 +30,7 @@ class vtkObject;
 class vtkOpenGLBufferObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
+class vtkPPIRayMarchShader;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLVertexArrayObject;
 class vtkPPIRayCellBuffers;
@@ -76,7 +77,7 @@ public:
    * failure (reported). `cut`: whether MaximumPeels stopped it.
    */
   int Render(vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayCellBuffers& cells,
-    vtkOpenGLQuadHelper& march, const MarchInputs& marchInputs, bool& cut, vtkObject* reporter);
+    vtkPPIRayMarchShader& march, const MarchInputs& marchInputs, bool& cut, vtkObject* reporter);
 
   /**
    * Passes the last frame added where rays ran out of the march's loop
@@ -115,11 +116,11 @@ private:
     bool firstLayer);
   // The sections of the cells cut by the near plane into EntryTexture.
   bool EnterAtNearPlane(vtkOpenGLRenderWindow* context, const Frame& frame, vtkObject* reporter);
-  void March(vtkOpenGLRenderWindow* context, const Frame& frame, vtkOpenGLQuadHelper& march,
+  void March(vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayMarchShader& march,
     const MarchInputs& marchInputs);
   // March, then continue the rays that ran out of the loop budget until none
   // is left (at most MaximumContinuations passes; false if some were left).
-  bool MarchToEnd(vtkOpenGLRenderWindow* context, const Frame& frame, vtkOpenGLQuadHelper& march,
+  bool MarchToEnd(vtkOpenGLRenderWindow* context, const Frame& frame, vtkPPIRayMarchShader& march,
     const MarchInputs& marchInputs);
   // EntryTexture bound alone and cleared (no entries), for a flat pass.
   void ClearEntries(vtkOpenGLRenderWindow* context);

@@ -1,16 +1,30 @@
 #include "vtkPPIRayMarchShader.h"
 
+#include "ppirayMapperModes.h"
+
+#include "ppirayVTKCompatibility.h"
 #include "vtkObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkPPIRayComputeProgram.h"
 #include "vtkSetGet.h"
 #include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include PPIRAY_VTK_OPENGL_HEADER
 
 #include "isosurface_fs.h"
+#include "march_compute_stage_cs.h"
+#include "march_fragment_stage_fs.h"
 #include "projection_fs.h"
 #include "ray_fs.h"
 #include "transfer_function_fs.h"
+
+namespace
+{
+// A compute work group's invocations along x and y (march_compute_stage_cs.glsl).
+constexpr int WorkGroupWidth = 8, WorkGroupHeight = 8;
+}
 
 //------------------------------------------------------------------------------
 vtkPPIRayMarchShader::vtkPPIRayMarchShader() = default;
@@ -20,7 +34,7 @@ vtkPPIRayMarchShader::~vtkPPIRayMarchShader() = default;
 
 //------------------------------------------------------------------------------
 std::string vtkPPIRayMarchShader::Compose(const std::string& traversal,
-  const std::string& integration, const std::string& isoSurfaces, int blend)
+  const std::string& integration, const std::string& isoSurfaces, int blend, int stage)
 {
   std::string march = traversal;
   vtkShaderProgram::Substitute(march, "//PPIRay::TransferFunction::Impl", transfer_function_fs);
@@ -31,18 +45,67 @@ std::string vtkPPIRayMarchShader::Compose(const std::string& traversal,
     march, "//PPIRay::Blend::Dec", "const int BLEND = " + std::to_string(blend) + ";");
   vtkShaderProgram::Substitute(march, "//PPIRay::Integrate::Impl", integration);
   vtkShaderProgram::Substitute(march, "//PPIRay::Ray::Impl", ray_fs);
+  const bool compute = stage == ppiray::MarchCompute;
+  vtkShaderProgram::Substitute(
+    march, "//PPIRay::MarchStage::Dec", compute ? march_compute_stage_cs : march_fragment_stage_fs);
+  if (compute)
+  {
+    // VTK's shader cache gives fragment shaders their version; this is ours.
+    vtkShaderProgram::Substitute(march, "//VTK::System::Dec", "#version 430 core");
+  }
   return march;
 }
 
 //------------------------------------------------------------------------------
-vtkOpenGLQuadHelper* vtkPPIRayMarchShader::Ready(vtkOpenGLRenderWindow* context,
-  const std::string& traversal, const std::string& integration, const std::string& isoSurfaces,
-  int blend, vtkObject* reporter)
+bool vtkPPIRayMarchShader::Ready(vtkOpenGLRenderWindow* context, const std::string& traversal,
+  const std::string& integration, const std::string& isoSurfaces, int blend, int stage,
+  vtkObject* reporter)
 {
-  std::string source = Compose(traversal, integration, isoSurfaces, blend);
+  if (stage == ppiray::MarchCompute && !this->ComputeRefused &&
+      this->ReadyCompute(
+        context, Compose(traversal, integration, isoSurfaces, blend, stage), reporter))
+  {
+    this->Built = ppiray::MarchCompute;
+    return true;
+  }
+  this->Built = ppiray::MarchFragment;
+  return this->ReadyFragment(
+    context, Compose(traversal, integration, isoSurfaces, blend, ppiray::MarchFragment), reporter);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPPIRayMarchShader::ReadyCompute(
+  vtkOpenGLRenderWindow* context, const std::string& source, vtkObject* reporter)
+{
+  if (!this->Compute || source != this->ComputeSource)
+  {
+    if (this->Compute)
+    {
+      this->Compute->ReleaseGraphicsResources(context);
+    }
+    this->Compute = vtkSmartPointer<vtkPPIRayComputeProgram>::New();
+    this->ComputeSource = source;
+    std::string why = "this OpenGL context has no compute shaders (GL 4.3)";
+    if (!vtkPPIRayComputeProgram::IsSupported(context) || !this->Compute->Build(source))
+    {
+      why = vtkPPIRayComputeProgram::IsSupported(context) ? this->Compute->GetError() : why;
+      vtkWarningWithObjectMacro(reporter, "The march runs as a fragment shader: " << why << ".");
+      this->Compute = nullptr;
+      this->ComputeSource.clear();
+      this->ComputeRefused = true;
+      return false;
+    }
+  }
+  return context->GetShaderCache()->ReadyShaderProgram(this->Compute) != nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPPIRayMarchShader::ReadyFragment(
+  vtkOpenGLRenderWindow* context, const std::string& source, vtkObject* reporter)
+{
   if (this->Quad && source == this->Source && !this->Quad->Program)
   {
-    return nullptr; // reported when it was built
+    return false; // reported when it was built
   }
   if (!this->Quad || source != this->Source)
   {
@@ -51,7 +114,7 @@ vtkOpenGLQuadHelper* vtkPPIRayMarchShader::Ready(vtkOpenGLRenderWindow* context,
       this->Quad->ReleaseGraphicsResources(context);
     }
     this->Quad.reset(new vtkOpenGLQuadHelper(context, nullptr, source.c_str(), ""));
-    this->Source = std::move(source);
+    this->Source = source;
   }
   else
   {
@@ -60,9 +123,42 @@ vtkOpenGLQuadHelper* vtkPPIRayMarchShader::Ready(vtkOpenGLRenderWindow* context,
   if (!this->Quad->Program)
   {
     vtkErrorWithObjectMacro(reporter, "Could not build the march shader.");
-    return nullptr;
+    return false;
   }
-  return this->Quad.get();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkShaderProgram* vtkPPIRayMarchShader::GetProgram() const
+{
+  if (this->Built == ppiray::MarchCompute)
+  {
+    return this->Compute;
+  }
+  return this->Quad ? this->Quad->Program : nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayMarchShader::Run(int width, int height, vtkTextureObject* const targets[3])
+{
+  if (this->Built != ppiray::MarchCompute)
+  {
+    this->Quad->Render();
+    return;
+  }
+  const GLenum formats[3] = { GL_RGBA32F, GL_RGBA32F, GL_RG32F };
+  for (int i = 0; i < 3; ++i)
+  {
+    glBindImageTexture(
+      static_cast<GLuint>(i), targets[i]->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, formats[i]);
+  }
+  const int size[2] = { width, height };
+  this->Compute->SetUniform2i("targetSize", size);
+  vtkPPIRayComputeProgram::Dispatch(width, height, WorkGroupWidth, WorkGroupHeight);
+  for (int i = 0; i < 3; ++i)
+  {
+    glBindImageTexture(static_cast<GLuint>(i), 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, formats[i]);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -74,4 +170,11 @@ void vtkPPIRayMarchShader::ReleaseGraphicsResources(vtkWindow* window)
     this->Quad.reset();
   }
   this->Source.clear();
+  if (this->Compute)
+  {
+    this->Compute->ReleaseGraphicsResources(window);
+    this->Compute = nullptr;
+  }
+  this->ComputeSource.clear();
+  this->ComputeRefused = false;
 }

@@ -2,18 +2,22 @@
  * @class   vtkPPIRayMarchShader
  * @brief   the march program: a traversal, an integration mode, isosurfaces, composed
  *
- * As VTK's vtkVolumeShaderComposer: the march pass's fragment shader is the
+ * As VTK's vtkVolumeShaderComposer: the march pass's shader is the
  * traversal of the cells (vtkPPIRayCellBuffers::GetMarchShader(), with its
  * layout), with the transfer function lookup, the isosurfaces, the
  * projection (BLEND, a ppiray::Projection: 0 composite, 1 maximum,
  * 2 minimum, 3 average intensity, 4 additive), the
- * integration mode's segment integral (vtkPPIRaySegmentIntegrator) and the
- * viewing ray substituted at their //PPIRay:: markers. The program is
- * rebuilt only when the composed source changes. Internal to
- * PPIRay::Rendering.
+ * integration mode's segment integral (vtkPPIRaySegmentIntegrator), the
+ * viewing ray and the stage substituted at their //PPIRay:: markers. The
+ * stage is where the same march runs: a fragment shader over a full-screen
+ * quad, or a compute shader over the target (march_fragment_stage_fs.glsl,
+ * march_compute_stage_cs.glsl). The program is rebuilt only when the
+ * composed source changes. Internal to PPIRay::Rendering.
  */
 #ifndef vtkPPIRayMarchShader_h
 #define vtkPPIRayMarchShader_h
+
+#include "vtkSmartPointer.h" // for vtkSmartPointer
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -21,6 +25,9 @@
 class vtkObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkPPIRayComputeProgram;
+class vtkShaderProgram;
+class vtkTextureObject;
 class vtkWindow;
 
 class vtkPPIRayMarchShader
@@ -29,16 +36,36 @@ public:
   vtkPPIRayMarchShader();
   ~vtkPPIRayMarchShader();
 
-  /** The fragment shader of `traversal` with the other parts substituted. */
+  /**
+   * The shader of `traversal` with the other parts substituted, for `stage`
+   * (a ppiray::MarchStage: MarchCompute, else the fragment stage).
+   */
   static std::string Compose(const std::string& traversal, const std::string& integration,
-    const std::string& isoSurfaces, int blend);
+    const std::string& isoSurfaces, int blend, int stage);
 
   /**
-   * The program of the composed shader, ready to use; null (reported) when
-   * it does not build.
+   * Builds (when the source changed) and binds the program of the composed
+   * shader in `stage` (ppiray::MarchStage; MarchAutomatic: the fragment
+   * stage); a compute stage the context cannot run or compile gives the
+   * fragment stage, with one warning. False (reported) when no program
+   * builds.
    */
-  vtkOpenGLQuadHelper* Ready(vtkOpenGLRenderWindow* context, const std::string& traversal,
-    const std::string& integration, const std::string& isoSurfaces, int blend, vtkObject* reporter);
+  bool Ready(vtkOpenGLRenderWindow* context, const std::string& traversal,
+    const std::string& integration, const std::string& isoSurfaces, int blend, int stage,
+    vtkObject* reporter);
+
+  /** The stage of the program last readied: MarchFragment or MarchCompute. */
+  int GetStage() const { return this->Built; }
+  /** The program last readied, for its uniforms. */
+  vtkShaderProgram* GetProgram() const;
+
+  /**
+   * One march pass over a width x height target: the fragment stage draws
+   * the quad into the framebuffer's three draw buffers (set by the caller);
+   * the compute stage stores into `targets` (accumulated, exit,
+   * continuation) bound as images.
+   */
+  void Run(int width, int height, vtkTextureObject* const targets[3]);
 
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -46,8 +73,16 @@ private:
   vtkPPIRayMarchShader(const vtkPPIRayMarchShader&) = delete;
   void operator=(const vtkPPIRayMarchShader&) = delete;
 
+  bool ReadyCompute(vtkOpenGLRenderWindow* context, const std::string& source, vtkObject* reporter);
+  bool ReadyFragment(
+    vtkOpenGLRenderWindow* context, const std::string& source, vtkObject* reporter);
+
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   std::string Source; // what Quad was built from
+  vtkSmartPointer<vtkPPIRayComputeProgram> Compute;
+  std::string ComputeSource;   // what Compute was built from
+  bool ComputeRefused = false; // warned once: the fragment stage from then on
+  int Built = 0;               // ppiray::MarchFragment
 };
 
 #endif

@@ -5,7 +5,6 @@
 
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPPIRayDepthPeeling.h"
 #include "vtkPPIRayFrameBuilder.h"
@@ -45,6 +44,7 @@ static_assert(int(Mapper::PARTIAL_PRE_INTEGRATION) == ppiray::PartialPreIntegrat
                 int(Mapper::HEXAHEDRON_SUBDIVIDE) == ppiray::HexahedronSubdivide &&
                 int(Mapper::TETRAHEDRON_PLANES) == ppiray::TetrahedronPlanes &&
                 int(Mapper::TETRAHEDRON_COMPACT) == ppiray::TetrahedronCompact &&
+                int(Mapper::MARCH_STAGE_COMPUTE) == ppiray::MarchCompute &&
                 int(Mapper::NON_CONVEX_PEEL) == ppiray::NonConvexPeel &&
                 int(Mapper::NON_CONVEX_CONVEXIFY) == ppiray::NonConvexConvexify &&
                 int(Mapper::NON_CONVEX_AUTOMATIC) == ppiray::NonConvexAutomatic &&
@@ -421,11 +421,11 @@ void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolum
   settings.TimePasses = this->TimePasses != 0;
   settings.ImageSampleDistance = this->ImageSampleDistance;
   settings.ClippingPlanes = this->ClippingPlanes;
-  vtkOpenGLQuadHelper* march = in.MarchShader.Ready(context,
-    in.Cells->GetMarchShader(this->HexahedronMode == HEXAHEDRON_ACCURATE),
-    in.Integrator->GetShaderCode(), vtkPPIRayIsoSurfaceUniforms::Declarations(isoMode),
-    settings.Projection, this);
-  if (!march || !in.FrameBuilder.Build(ren, vol, *in.Cells, settings, this))
+  if (!in.MarchShader.Ready(context,
+        in.Cells->GetMarchShader(this->HexahedronMode == HEXAHEDRON_ACCURATE),
+        in.Integrator->GetShaderCode(), vtkPPIRayIsoSurfaceUniforms::Declarations(isoMode),
+        settings.Projection, this->MarchStage, this) ||
+      !in.FrameBuilder.Build(ren, vol, *in.Cells, settings, this))
   {
     return;
   }
@@ -454,8 +454,9 @@ void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolum
   bool cut = false;
   preparation->StopTimer();
   statistics.PreparationTime = 1000.0 * preparation->GetElapsedTime();
-  statistics.NumberOfPeels =
-    std::max(0, in.Peeling.Render(context, frame, *in.Cells, *march, marchInputs, cut, this));
+  statistics.NumberOfPeels = std::max(
+    0, in.Peeling.Render(context, frame, *in.Cells, in.MarchShader, marchInputs, cut, this));
+  statistics.MarchStage = in.MarchShader.GetStage();
   statistics.NumberOfContinuations = in.Peeling.GetNumberOfContinuations();
   statistics.NumberOfCellSteps = static_cast<vtkIdType>(in.Peeling.GetNumberOfCellSteps());
   in.GridInput.ObserveFrame(statistics.NumberOfPeels, in.Mesh.GetNumberOfHexahedra() > 0);
@@ -474,25 +475,24 @@ void vtkUnstructuredGridGPURayCastMapper::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "IntegrationMode: " << this->GetIntegrationModeAsString() << "\n";
   os << indent << "HexahedronMode: " << this->GetHexahedronModeAsString()
      << ", NonlinearSubdivisionLevel: " << this->NonlinearSubdivisionLevel << "\n";
-  os << indent << "TetrahedronLayout: " << this->GetTetrahedronLayoutAsString() << "\n";
-  os << indent << "EmbedIsoSurfaces: " << this->EmbedIsoSurfaces << "\n";
-  os << indent << "AverageIPScalarRange: (" << this->AverageIPScalarRange[0] << ", "
-     << this->AverageIPScalarRange[1] << ")\n";
+  os << indent << "TetrahedronLayout: " << this->GetTetrahedronLayoutAsString()
+     << ", MarchStage: " << this->MarchStage << "\n";
+  os << indent << "EmbedIsoSurfaces: " << this->EmbedIsoSurfaces << ", AverageIPScalarRange: ("
+     << this->AverageIPScalarRange[0] << ", " << this->AverageIPScalarRange[1] << ")\n";
   os << indent << "VectorMode: " << (this->VectorMode == MAGNITUDE ? "MAGNITUDE" : "COMPONENT")
-     << "\n";
-  os << indent << "VectorComponent: " << this->VectorComponent << "\n";
-  os << indent << "MaximumNumberOfPeels: " << this->MaximumNumberOfPeels << "\n";
-  os << indent << "NonConvexMode: " << this->NonConvexMode << "\n";
+     << ", VectorComponent: " << this->VectorComponent << "\n";
+  os << indent << "MaximumNumberOfPeels: " << this->MaximumNumberOfPeels
+     << ", NonConvexMode: " << this->NonConvexMode << "\n";
   os << indent << "Convexifier: " << this->Convexifier << "\n";
   os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
-  os << indent << "PsiTableSize: " << this->PsiTableSize << "\n";
-  os << indent << "PreIntegrationTableSize: " << this->PreIntegrationTableSize << "\n";
+  os << indent << "PsiTableSize: " << this->PsiTableSize
+     << ", PreIntegrationTableSize: " << this->PreIntegrationTableSize << "\n";
   os << indent << "TerminationOpacity: " << this->TerminationOpacity << "\n";
-  os << indent << "CountCellSteps: " << this->CountCellSteps << "\n";
-  os << indent << "TimePasses: " << this->TimePasses << "\n";
+  os << indent << "CountCellSteps: " << this->CountCellSteps << ", TimePasses: " << this->TimePasses
+     << "\n";
   os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
-  os << indent << "MinimumImageSampleDistance: " << this->MinimumImageSampleDistance << "\n";
-  os << indent << "MaximumImageSampleDistance: " << this->MaximumImageSampleDistance << "\n";
+  os << indent << "MinimumImageSampleDistance: " << this->MinimumImageSampleDistance
+     << ", MaximumImageSampleDistance: " << this->MaximumImageSampleDistance << "\n";
   os << indent << "AutoAdjustSampleDistances: " << this->AutoAdjustSampleDistances << "\n";
   os << indent << "MaximumBufferTexels: " << this->MaximumBufferTexels << "\n";
   os << indent << "Statistics:\n";

@@ -177,6 +177,35 @@ public:
   ///@}
 
   /**
+   * Where the march runs (Documentation/algorithms.md, "March stages"):
+   * - MARCH_STAGE_FRAGMENT: a fragment shader over a full-screen quad, one
+   *   fragment per pixel (every OpenGL 3.2 context);
+   * - MARCH_STAGE_COMPUTE: the same march as a compute shader (OpenGL 4.3),
+   *   one invocation per pixel in 8 x 8 work groups, storing into the same
+   *   targets; where the context has no compute shaders or the shader does
+   *   not build, one warning and the fragment stage;
+   * - MARCH_STAGE_AUTOMATIC (default): the stage measured faster where the
+   *   mapper runs (results.md, "March stages"): the fragment stage today.
+   * GetStatistics()->GetMarchStage() says which ran. Images agree to float
+   * rounding.
+   */
+  enum MarchStages
+  {
+    MARCH_STAGE_FRAGMENT = 0,
+    MARCH_STAGE_COMPUTE = 1,
+    MARCH_STAGE_AUTOMATIC = 2
+  };
+
+  ///@{
+  /** The march stage (MarchStages), default MARCH_STAGE_AUTOMATIC. */
+  vtkSetClampMacro(MarchStage, int, MARCH_STAGE_FRAGMENT, MARCH_STAGE_AUTOMATIC);
+  vtkGetMacro(MarchStage, int);
+  void SetMarchStageToFragment() { this->SetMarchStage(MARCH_STAGE_FRAGMENT); }
+  void SetMarchStageToCompute() { this->SetMarchStage(MARCH_STAGE_COMPUTE); }
+  void SetMarchStageToAutomatic() { this->SetMarchStage(MARCH_STAGE_AUTOMATIC); }
+  ///@}
+
+  /**
    * Blend modes: COMPOSITE_BLEND (vtkUnstructuredGridVolumeMapper) and VTK's
    * ISOSURFACE_BLEND (the value of vtkVolumeMapper::ISOSURFACE_BLEND): the
    * isosurfaces of vtkVolumeProperty::GetIsoSurfaceValues() (at most 16),
@@ -438,6 +467,7 @@ protected:
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
   int HexahedronMode = HEXAHEDRON_ACCURATE;
   int TetrahedronLayout = TETRAHEDRON_PLANES;
+  int MarchStage = MARCH_STAGE_AUTOMATIC;
   int NonlinearSubdivisionLevel = 1;
   vtkTypeBool EmbedIsoSurfaces = 0;
   double AverageIPScalarRange[2] = { VTK_FLOAT_MIN, VTK_FLOAT_MAX };

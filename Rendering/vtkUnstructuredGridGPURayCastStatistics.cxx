@@ -76,6 +76,7 @@ void vtkUnstructuredGridGPURayCastStatistics::PrintSelf(ostream& os, vtkIndent i
   os << indent << "GPUMemorySize: " << this->GPUMemorySize << "\n";
   os << indent << "CellArrayBytes: " << this->CellArrayBytes << "\n";
   os << indent << "NumberOfPeels: " << this->NumberOfPeels << "\n";
+  os << indent << "MarchStage: " << this->MarchStage << "\n";
   os << indent << "NumberOfContinuations: " << this->NumberOfContinuations << "\n";
   os << indent << "NumberOfCellSteps: " << this->NumberOfCellSteps << "\n";
   os << indent << "PreparationTime: " << this->PreparationTime << "\n";

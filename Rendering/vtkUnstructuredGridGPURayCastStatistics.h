@@ -97,6 +97,12 @@ public:
   vtkGetMacro(NumberOfPeels, int);
 
   /**
+   * Where the last frame's march ran: vtkUnstructuredGridGPURayCastMapper::
+   * MARCH_STAGE_FRAGMENT or MARCH_STAGE_COMPUTE (never AUTOMATIC).
+   */
+  vtkGetMacro(MarchStage, int);
+
+  /**
    * March passes the last frame added to continue rays that needed more loop
    * iterations than one pass takes (thousands of transfer-function control
    * points crossed along a ray; some drivers end a shader's loops silently
@@ -183,6 +189,7 @@ private:
   vtkIdType GPUMemorySize = 0;
   vtkIdType CellArrayBytes = 0;
   int NumberOfPeels = 0;
+  int MarchStage = 0;
   int NumberOfContinuations = 0;
   vtkIdType NumberOfCellSteps = 0;
   double PreparationTime = 0.0;

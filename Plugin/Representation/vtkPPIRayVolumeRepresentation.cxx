@@ -201,6 +201,12 @@ void vtkPPIRayVolumeRepresentation::SetTetrahedronLayout(int layout)
 }
 
 //------------------------------------------------------------------------------
+void vtkPPIRayVolumeRepresentation::SetMarchStage(int stage)
+{
+  this->Mapper->SetMarchStage(stage);
+}
+
+//------------------------------------------------------------------------------
 void vtkPPIRayVolumeRepresentation::SetPsiTableSize(int size)
 {
   this->Mapper->SetPsiTableSize(size);

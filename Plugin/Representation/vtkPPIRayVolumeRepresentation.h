@@ -56,6 +56,7 @@ public:
   void SetMaximumNumberOfPeels(int peels);
   void SetNonConvexMode(int mode);
   void SetTetrahedronLayout(int layout);
+  void SetMarchStage(int stage);
   void SetPsiTableSize(int size);
   void SetPreIntegrationTableSize(int size);
   void SetTerminationOpacity(double opacity);

@@ -19,15 +19,14 @@ uniform int maximumSteps;
 //PPIRay::Cells::Dec
 uniform float terminationAlpha;
 
-in vec2 texCoord; // pixel centre in [0, 1]^2
-
-// Ping-pong targets: the accumulated premultiplied colour, this peel's
-// colour composited under the earlier peels'; the ray parameter where
-// this peel's march stopped (for the next entry pass); a continuation and
-// the steps this peel has taken (below).
-out vec4 fragOutput0;
-out vec4 fragOutput1;
-out vec4 fragOutput2;
+// The stage the march runs in (march_fragment_stage_fs.glsl,
+// march_compute_stage_cs.glsl): texCoord, the pixel centre in [0, 1]^2;
+// marchPixel(), the pixel; the ping-pong targets fragOutput0..2: the
+// accumulated premultiplied colour, this peel's colour composited under the
+// earlier peels'; the ray parameter where this peel's march stopped (for the
+// next entry pass); a continuation and the steps this peel has taken
+// (below); and main(), which runs marchRay() (march_fs.glsl).
+//PPIRay::MarchStage::Dec
 
 const float INFINITY = 3.0e38;
 

@@ -99,9 +99,10 @@ void nextCell(int code, int exitFace, inout int cell, inout int entryFace, inout
   entryFace = next - FACES * cell;
 }
 
-void main()
+// The ray through one pixel, this peel (main() of the stage calls it).
+void marchRay()
 {
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  ivec2 pixel = marchPixel();
   vec4 before;
   float resume;
   int startCell, startFace;

@@ -8,6 +8,7 @@
 //
 //   ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]
 //                   [--views N] [--peer-views N] [--inside] [--check N]
+//                   [--march-stage fragment,compute]
 //                   [--transfer-function ramp|realistic|cutoff|detailed] [--breakdown]
 //                   [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,ppiray-compact,
 //                              ppiray-subdivide,ppiray-fast,pt,raycast,zsweep]
@@ -82,6 +83,7 @@ struct Options
   int Check = 0;
   std::string TransferFunction = "ramp";
   bool Breakdown = false;
+  std::vector<int> MarchStages; // each PPIRay mapper once per stage (default: its default)
 };
 
 struct Row
@@ -383,6 +385,78 @@ void Append(std::vector<Row>& rows, const std::vector<Row>& more)
 {
   rows.insert(rows.end(), more.begin(), more.end());
 }
+
+// The stages of a --march-stage list ("fragment,compute"); empty on a bad name.
+std::vector<int> MarchStages(const std::string& list)
+{
+  std::vector<int> stages;
+  std::stringstream names(list);
+  std::string name;
+  while (std::getline(names, name, ','))
+  {
+    const int stage = name == "fragment" ? vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_FRAGMENT
+                      : name == "compute" ? vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_COMPUTE
+                      : name == "automatic"
+                        ? vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_AUTOMATIC
+                        : -1;
+    if (stage < 0)
+    {
+      return {};
+    }
+    stages.push_back(stage);
+  }
+  return stages;
+}
+
+// PPIRay as `name` (ppiray, ppiray-exact, ...) in march stage `stage` (-1:
+// the mapper's default).
+std::vector<Row> MeasurePPIRay(
+  const std::string& name, int stage, vtkUnstructuredGrid* grid, const Options& o)
+{
+  vtkNew<vtkUnstructuredGridGPURayCastMapper> m;
+  if (name == "ppiray-subdivide")
+  {
+    m->SetHexahedronModeToSubdivide();
+  }
+  else if (name == "ppiray-fast")
+  {
+    m->SetHexahedronModeToFast();
+  }
+  if (stage >= 0)
+  {
+    m->SetMarchStage(stage);
+  }
+  m->SetTetrahedronLayout(name == "ppiray-compact"
+                            ? vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_COMPACT
+                            : vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_PLANES);
+  m->SetIntegrationMode(
+    name == "ppiray-exact"     ? vtkUnstructuredGridGPURayCastMapper::EXACT_LINEAR
+    : name == "ppiray-average" ? vtkUnstructuredGridGPURayCastMapper::AVERAGE_COLOR
+    : name == "ppiray-full"    ? vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION
+                               : vtkUnstructuredGridGPURayCastMapper::PARTIAL_PRE_INTEGRATION);
+  const std::string stageName =
+    stage == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_COMPUTE    ? " [compute]"
+    : stage == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_FRAGMENT ? " [fragment]"
+                                                                         : "";
+  std::vector<Row> rows = Measure(std::string("PPIRay ") + m->GetIntegrationModeAsString() +
+                                    (name == "ppiray-compact"      ? " (compact)"
+                                      : name == "ppiray-subdivide" ? " (subdivided)"
+                                      : name == "ppiray-fast"      ? " (fast)"
+                                                                   : "") +
+                                    stageName,
+    m, grid, o, o.Views);
+  if (stage == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_COMPUTE &&
+      m->GetStatistics()->GetMarchStage() != stage)
+  {
+    std::cout << "(the compute stage was not available: measured in the fragment stage)\n";
+  }
+  if (name == "ppiray-full")
+  {
+    std::printf("FULL_PRE_INTEGRATION table %d^3 built in %.3f s\n",
+      m->GetPreIntegrationTableSize(), m->GetStatistics()->GetPreIntegrationTableBuildTime());
+  }
+  return rows;
+}
 }
 
 int main(int argc, char* argv[])
@@ -447,12 +521,22 @@ int main(int argc, char* argv[])
     {
       o.Breakdown = true;
     }
+    else if (arg == "--march-stage")
+    {
+      o.MarchStages = MarchStages(next());
+      if (o.MarchStages.empty())
+      {
+        std::cerr << "--march-stage: a list of fragment, compute, automatic\n";
+        return 2;
+      }
+    }
     else
     {
       std::cout
         << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]"
            " [--views N] [--peer-views N] [--inside] [--check N]"
            " [--transfer-function ramp|realistic|cutoff|detailed] [--breakdown]"
+           " [--march-stage fragment,compute]"
            " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,ppiray-compact,"
            "ppiray-subdivide,ppiray-fast,pt,raycast,zsweep]\n\n"
            "Frame time of PPIRay against VTK's unstructured volume mappers on one scene, same\n"
@@ -473,6 +557,8 @@ int main(int argc, char* argv[])
            "                      cutoff (realistic colours, opacity zero on the lower 45 %)\n"
            "                      or detailed (128 colour and 127 opacity nodes)\n"
            "  --breakdown         GPU time per kind of pass (a third, untimed orbit)\n"
+           "  --march-stage LIST  each PPIRay mapper once per march stage listed\n"
+           "                      (fragment, compute, automatic; default: the mapper's)\n"
            "  --mappers LIST      comma-separated (default ppiray,pt,raycast): ppiray (partial\n"
            "                      pre-integration), ppiray-exact, ppiray-full, ppiray-average,\n"
            "                      ppiray-compact (partial, TETRAHEDRON_COMPACT layout),\n"
@@ -516,33 +602,9 @@ int main(int argc, char* argv[])
         name == "ppiray-full" || name == "ppiray-compact" || name == "ppiray-subdivide" ||
         name == "ppiray-fast")
     {
-      vtkNew<vtkUnstructuredGridGPURayCastMapper> m;
-      if (name == "ppiray-subdivide")
+      for (int stage : o.MarchStages.empty() ? std::vector<int>{ -1 } : o.MarchStages)
       {
-        m->SetHexahedronModeToSubdivide();
-      }
-      else if (name == "ppiray-fast")
-      {
-        m->SetHexahedronModeToFast();
-      }
-      m->SetTetrahedronLayout(name == "ppiray-compact"
-                                ? vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_COMPACT
-                                : vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_PLANES);
-      m->SetIntegrationMode(
-        name == "ppiray-exact"     ? vtkUnstructuredGridGPURayCastMapper::EXACT_LINEAR
-        : name == "ppiray-average" ? vtkUnstructuredGridGPURayCastMapper::AVERAGE_COLOR
-        : name == "ppiray-full"    ? vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION
-                                   : vtkUnstructuredGridGPURayCastMapper::PARTIAL_PRE_INTEGRATION);
-      Append(rows, Measure(std::string("PPIRay ") + m->GetIntegrationModeAsString() +
-                             (name == "ppiray-compact"      ? " (compact)"
-                               : name == "ppiray-subdivide" ? " (subdivided)"
-                               : name == "ppiray-fast"      ? " (fast)"
-                                                            : ""),
-                     m, grid, o, o.Views));
-      if (name == "ppiray-full")
-      {
-        std::printf("FULL_PRE_INTEGRATION table %d^3 built in %.3f s\n",
-          m->GetPreIntegrationTableSize(), m->GetStatistics()->GetPreIntegrationTableBuildTime());
+        Append(rows, MeasurePPIRay(name, stage, grid, o));
       }
     }
     else if (name == "pt")

@@ -30,6 +30,7 @@ NEW_VALUES = {
     "MaximumNumberOfPeels": (7, 7, "GetMaximumNumberOfPeels"),
     "NonConvexMode": ("Automatic", 2, "GetNonConvexMode"),
     "TetrahedronLayout": ("Compact", 1, "GetTetrahedronLayout"),
+    "MarchStage": ("Compute", 1, "GetMarchStage"),
     "PsiTableSize": (128, 128, "GetPsiTableSize"),
     "PreIntegrationTableSize": (32, 32, "GetPreIntegrationTableSize"),
     "TerminationOpacity": (0.95, 0.95, "GetTerminationOpacity"),

@@ -37,33 +37,43 @@
 
 namespace ppiray_test
 {
-// The tetrahedron layout a test runs with: TETRAHEDRON_COMPACT when its
-// arguments hold "--tetrahedron-layout compact" (the ".Compact" variants
-// ctest runs of the tests that read it, PPIRayTesting.cmake), else the
-// default; every PPIRay mapper a test shows (Scene::Show) or passes to
-// UseTetrahedronLayout() gets it.
+// The tetrahedron layout and march stage a test runs with:
+// TETRAHEDRON_COMPACT when its arguments hold "--tetrahedron-layout compact"
+// (the ".Compact" variants), MARCH_STAGE_COMPUTE with "--march-stage
+// compute" (the ".Compute" variants; ctest runs both of the tests that read
+// them, PPIRayTesting.cmake), else the defaults; every PPIRay mapper a test
+// shows (Scene::Show) or passes to UseTetrahedronLayout() gets them.
 inline int& TetrahedronLayout()
 {
   static int layout = vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_PLANES;
   return layout;
 }
 
+inline int& MarchStage()
+{
+  static int stage = vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_AUTOMATIC;
+  return stage;
+}
+
 inline void ReadTetrahedronLayout(int argc, char* argv[])
 {
   for (int i = 1; i + 1 < argc; ++i)
   {
-    if (std::strcmp(argv[i], "--tetrahedron-layout") != 0)
-    {
-      continue;
-    }
-    if (std::strcmp(argv[i + 1], "compact") == 0)
+    const bool layout = std::strcmp(argv[i], "--tetrahedron-layout") == 0;
+    const bool stage = std::strcmp(argv[i], "--march-stage") == 0;
+    if (layout && std::strcmp(argv[i + 1], "compact") == 0)
     {
       TetrahedronLayout() = vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_COMPACT;
     }
-    else if (std::strcmp(argv[i + 1], "planes") != 0)
+    else if (stage && std::strcmp(argv[i + 1], "compute") == 0)
     {
-      // A misspelt layout would silently test the default one.
-      std::cout << "FAILED: unknown --tetrahedron-layout " << argv[i + 1] << "\n";
+      MarchStage() = vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_COMPUTE;
+    }
+    else if ((layout && std::strcmp(argv[i + 1], "planes") != 0) ||
+             (stage && std::strcmp(argv[i + 1], "fragment") != 0))
+    {
+      // A misspelt option would silently test the default.
+      std::cout << "FAILED: unknown " << argv[i] << " " << argv[i + 1] << "\n";
       std::exit(EXIT_FAILURE);
     }
   }
@@ -74,6 +84,7 @@ inline void UseTetrahedronLayout(vtkAbstractVolumeMapper* mapper)
   if (auto* ours = vtkUnstructuredGridGPURayCastMapper::SafeDownCast(mapper))
   {
     ours->SetTetrahedronLayout(TetrahedronLayout());
+    ours->SetMarchStage(MarchStage());
   }
 }
 

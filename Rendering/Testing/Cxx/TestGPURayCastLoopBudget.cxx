@@ -148,8 +148,9 @@ int Check(const std::string& name, vtkUnstructuredGrid* grid,
 }
 }
 
-int TestGPURayCastLoopBudget(int, char*[])
+int TestGPURayCastLoopBudget(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   const int n[3] = { 16, 16, 16 };
   const double origin[3] = { 0, 0, 0 };
   auto tetrahedra = ppiray_test::VoxelTetrahedra(
