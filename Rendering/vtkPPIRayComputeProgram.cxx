@@ -1,8 +1,8 @@
 #include "vtkPPIRayComputeProgram.h"
 
+#include "ppirayVTKCompatibility.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "ppirayVTKCompatibility.h"
 #include PPIRAY_VTK_OPENGL_HEADER
 
 #include <vector>
@@ -13,7 +13,7 @@ namespace
 {
 // The info log of a shader or program (`get` glGetShaderInfoLog or
 // glGetProgramInfoLog, `length` its GL_INFO_LOG_LENGTH).
-template <typename Get>
+template<typename Get>
 std::string InfoLog(GLuint object, GLint length, Get get)
 {
   std::vector<char> log(static_cast<size_t>(length > 0 ? length : 1), '\0');

@@ -150,6 +150,7 @@ void RiseAndFallTransferFunction(
 
 int TestGPURayCastBlendModes(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   const int n[3] = { 8, 8, 8 };
   const double origin[3] = { 0, 0, 0 };
   auto keep = [](int, int j, int k) { return !(j >= 5 && j < 7 && k >= 3 && k < 5); };

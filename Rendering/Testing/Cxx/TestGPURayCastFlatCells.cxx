@@ -81,8 +81,9 @@ int ExpectFlat(const char* what, vtkUnstructuredGrid* grid, vtkIdType flat)
 }
 }
 
-int TestGPURayCastFlatCells(int, char*[])
+int TestGPURayCastFlatCells(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   using Mapper = vtkUnstructuredGridGPURayCastMapper;
   int errors = 0;
   ppiray_test::MixedBlock block(N, 0.0);

@@ -215,6 +215,7 @@ int Fail(const std::string& what)
 
 int TestGPURayCastHexahedra(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   int errors = 0;
   const char* names[3] = { "ACCURATE", "FAST", "SUBDIVIDE" };
 

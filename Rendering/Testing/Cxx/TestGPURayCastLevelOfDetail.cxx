@@ -26,8 +26,9 @@
 #include <cstdlib>
 #include <vector>
 
-int TestGPURayCastLevelOfDetail(int, char*[])
+int TestGPURayCastLevelOfDetail(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   const int size = 200;
   ppiray_test::Scene scene(size, size);
   auto grid = ppiray_test::TunnelAndBlock();

@@ -18,11 +18,11 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkVolumeProperty.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 #include "vtkUnstructuredGridGPURayCastStatistics.h"
+#include "vtkVolumeProperty.h"
 
 #include <cmath>
 #include <cstring>
@@ -61,7 +61,8 @@ Stages RenderBoth(ppiray_test::Scene& scene, vtkUnstructuredGrid* grid,
   scene.Window->Render();
   out.Compute = ppiray_test::ReadRGB(scene.Window);
   out.ComputeRan = mapper->GetStatistics()->GetMarchStage();
-  out.Continuations = std::min(out.Continuations, mapper->GetStatistics()->GetNumberOfContinuations());
+  out.Continuations =
+    std::min(out.Continuations, mapper->GetStatistics()->GetNumberOfContinuations());
   out.Warnings = messages->Warnings + messages->Errors;
   return out;
 }
@@ -81,7 +82,7 @@ int Check(const char* name, const Stages& s, bool fallback)
   const int expected = fallback ? Mapper::MARCH_STAGE_FRAGMENT : Mapper::MARCH_STAGE_COMPUTE;
   const bool warned = s.Warnings.find("fragment shader") != std::string::npos;
   if (s.ComputeRan != expected || largest > 1 || coverage > 0 || covered < 3000 ||
-    warned != fallback)
+      warned != fallback)
   {
     std::cout << "FAILED: " << name << ": expected the " << (fallback ? "fragment" : "compute")
               << " stage, within 1/255 of the fragment stage, the same pixels covered"
@@ -125,12 +126,12 @@ int TestGPURayCastMarchStages(int argc, char* argv[])
     return errors == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
   }
   errors += Check("hexahedra natively",
-    RenderBoth(scene, hexahedra, { 2.0, -1.4, 1.8 },
-      [](Mapper* m) { m->SetHexahedronModeToAccurate(); }),
+    RenderBoth(
+      scene, hexahedra, { 2.0, -1.4, 1.8 }, [](Mapper* m) { m->SetHexahedronModeToAccurate(); }),
     false);
   errors += Check("maximum intensity",
-    RenderBoth(scene, cavity, { -1.5, 2.0, 2.4 },
-      [](Mapper* m) { m->SetBlendModeToMaximumIntensity(); }),
+    RenderBoth(
+      scene, cavity, { -1.5, 2.0, 2.4 }, [](Mapper* m) { m->SetBlendModeToMaximumIntensity(); }),
     false);
   vtkNew<vtkPlane> plane;
   plane->SetOrigin(0.5, 0.5, 0.5);
@@ -150,7 +151,8 @@ int TestGPURayCastMarchStages(int argc, char* argv[])
   }
   scene.Property->SetColor(many);
   scene.Property->SetScalarOpacity(faint);
-  auto wavy = ppiray_test::VoxelTetrahedra(n, 1.0 / 6, origin, [](int, int, int) { return true; },
+  auto wavy = ppiray_test::VoxelTetrahedra(
+    n, 1.0 / 6, origin, [](int, int, int) { return true; },
     [](double x, double y, double z) { return 1.5 + 1.5 * std::sin(40.0 * (x + 2 * y + 3 * z)); });
   const Stages budget = RenderBoth(
     scene, wavy, { 2.2, 1.6, 2.5 }, [](Mapper* m) { m->SetIntegrationModeToExactLinear(); });

@@ -92,8 +92,9 @@ int Fail(const char* what)
 
 }
 
-int TestGPURayCastMixedNative(int, char*[])
+int TestGPURayCastMixedNative(int argc, char* argv[])
 {
+  ppiray_test::ReadTetrahedronLayout(argc, argv);
   using Mapper = vtkUnstructuredGridGPURayCastMapper;
   int errors = 0;
   ppiray_test::MixedBlock straight(N, 0.0);
