@@ -325,7 +325,7 @@ int PopCount(unsigned mask)
 // where that face's corners are exactly those; where ids repeat (in the key
 // or in the cell), every face is compared by ids.
 bool CellFacesFrom(const CellFaceMesh& mesh, vtkIdType c, int f, const FaceKey& key,
-  const std::vector<vtkIdType>& offsets, const std::vector<vtkIdType>& links,
+  const std::vector<vtkIdType>& offsets, const std::vector<int>& links,
   std::vector<FaceEntry>& entries)
 {
   const int first = key[0] < 0 ? 1 : 0;
@@ -338,10 +338,10 @@ bool CellFacesFrom(const CellFaceMesh& mesh, vtkIdType c, int f, const FaceKey& 
   std::sort(byDegree.begin() + first, byDegree.end(),
     [&](vtkIdType p, vtkIdType q)
     { return offsets[p + 1] - offsets[p] < offsets[q + 1] - offsets[q]; });
-  const vtkIdType *a = links.data() + offsets[byDegree[first]],
-                  *aEnd = links.data() + offsets[byDegree[first] + 1];
-  const vtkIdType *b = links.data() + offsets[byDegree[first + 1]],
-                  *bEnd = links.data() + offsets[byDegree[first + 1] + 1];
+  const int *a = links.data() + offsets[byDegree[first]],
+            *aEnd = links.data() + offsets[byDegree[first] + 1];
+  const int *b = links.data() + offsets[byDegree[first + 1]],
+            *bEnd = links.data() + offsets[byDegree[first + 1] + 1];
   entries.clear();
   while (a < aEnd && b < bEnd)
   {
@@ -401,7 +401,7 @@ std::vector<unsigned char> InvertedCells(const CellFaceMesh& mesh, const ppiray:
   }
   return ppiray::InvertedSheets(
     mesh.NumberOfCells, mesh.FaceSlots,
-    [&](vtkIdType c, int f) { return a.Neighbors[mesh.FaceSlots * c + f]; },
+    [&](vtkIdType c, int f) { return vtkIdType{ a.Neighbors[mesh.FaceSlots * c + f] }; },
     [&](vtkIdType c, int f) { return a.Folded[mesh.FaceSlots * c + f] != 0; },
     [&](vtkIdType c)
     {
@@ -410,11 +410,19 @@ std::vector<unsigned char> InvertedCells(const CellFaceMesh& mesh, const ppiray:
     });
 }
 
+// What MatchCellFaces() knows of a cell face: written by its face's match,
+// hidden (a flat cell's face that other cells close), no area.
+enum FaceFlag : unsigned char
+{
+  MATCHED = 1,
+  HIDDEN = 2,
+  ZERO_AREA = 4
+};
+
 // Point-to-cell links by counting sort: cells around point p are
 // links[offsets[p]..offsets[p+1]) (a cell with a repeated point id is
 // listed there twice).
-void LinkPoints(
-  const CellFaceMesh& mesh, std::vector<vtkIdType>& offsets, std::vector<vtkIdType>& links)
+void LinkPoints(const CellFaceMesh& mesh, std::vector<vtkIdType>& offsets, std::vector<int>& links)
 {
   offsets.assign(mesh.NumberOfPoints + 1, 0);
   auto forEachCorner = [&](auto&& visit)
@@ -435,7 +443,7 @@ void LinkPoints(
   }
   links.resize(offsets[mesh.NumberOfPoints]);
   std::vector<vtkIdType> fill(offsets.begin(), offsets.end() - 1);
-  forEachCorner([&](vtkIdType c, vtkIdType p) { links[fill[p]++] = c; });
+  forEachCorner([&](vtkIdType c, vtkIdType p) { links[fill[p]++] = static_cast<int>(c); });
 }
 }
 
@@ -450,7 +458,7 @@ int SideOfFace(
 
 //------------------------------------------------------------------------------
 vtkIdType NearestSolidCell(
-  vtkIdType cell, const vtkIdType* neighbors, int slots, const unsigned char* flat)
+  vtkIdType cell, const int* neighbors, int slots, const unsigned char* flat)
 {
   std::vector<vtkIdType> queue = { cell };
   for (size_t k = 0; k < queue.size() && k < 64; ++k)
@@ -492,19 +500,31 @@ double CellVolume6(const CellFaceTable& table, const vtkIdType* corners, const d
 //------------------------------------------------------------------------------
 CellAdjacency MatchCellFaces(const CellFaceMesh& mesh)
 {
-  std::vector<vtkIdType> offsets, links;
+  CellAdjacency result;
+  if (mesh.NumberOfCells > MaximumAdjacencyCells)
+  {
+    return result;
+  }
+  std::vector<vtkIdType> offsets;
+  std::vector<int> links;
   LinkPoints(mesh, offsets, links);
 
   const vtkIdType slots = mesh.FaceSlots * mesh.NumberOfCells;
-  CellAdjacency result;
   result.Neighbors.assign(slots, -1);
   result.NeighborFaces.assign(slots, -1);
   result.Folded.assign(slots, 0);
-  std::vector<unsigned char> zeroArea(slots, 0), hiddenFace(slots, 0);
   std::atomic<vtkIdType> nonManifold(0), folded(0);
-  // Cell faces already written, skipped when their own turn comes (a face
-  // whose writer has not yet been reached is matched again, and left to it).
-  std::unique_ptr<std::atomic<unsigned char>[]> matched(new std::atomic<unsigned char>[slots]());
+  // What is known of each cell face (FaceFlag bits). MATCHED: written,
+  // skipped when its own turn comes (a face whose writer has not yet been
+  // reached is matched again, and left to it). A slot has one writer (the
+  // thread of its face's first cell face), so a bit is set by load and store.
+  std::unique_ptr<std::atomic<unsigned char>[]> flags(new std::atomic<unsigned char>[slots]());
+  auto setFlag = [&](vtkIdType slot, unsigned char bit)
+  {
+    flags[slot].store(flags[slot].load(std::memory_order_relaxed) | bit, std::memory_order_relaxed);
+  };
+  auto hasFlag = [&](vtkIdType slot, unsigned char bit)
+  { return (flags[slot].load(std::memory_order_relaxed) & bit) != 0; };
 
   // Each face is matched once, by the first of its cell faces (by cell,
   // then face), which writes every cell face on it: no two threads write
@@ -520,14 +540,14 @@ CellAdjacency MatchCellFaces(const CellFaceMesh& mesh)
     {
       for (int f = 0; f < TableOf(mesh, c).Faces; ++f)
       {
-        if (matched[mesh.FaceSlots * c + f].load(std::memory_order_relaxed))
+        if (hasFlag(mesh.FaceSlots * c + f, MATCHED))
         {
           continue; // written by the first cell face on it
         }
         const FaceKey key = SortedFace(mesh, c, f);
         if (IsZeroArea(key))
         {
-          zeroArea[mesh.FaceSlots * c + f] = 1;
+          setFlag(mesh.FaceSlots * c + f, ZERO_AREA);
           continue;
         }
         if (!CellFacesFrom(mesh, c, f, key, offsets, links, entries) || entries.size() < 2)
@@ -549,14 +569,13 @@ CellAdjacency MatchCellFaces(const CellFaceMesh& mesh)
         for (size_t i = 0; i < entries.size(); ++i)
         {
           const vtkIdType slot = mesh.FaceSlots * entries[i].Cell + entries[i].Face;
-          hiddenFace[slot] = hidden[i];
-          matched[slot].store(1, std::memory_order_relaxed);
+          setFlag(slot, MATCHED | (hidden[i] ? HIDDEN : 0));
           if (partner[i] < 0)
           {
             continue;
           }
           const FaceEntry& mate = entries[partner[i]];
-          result.Neighbors[slot] = mate.Cell;
+          result.Neighbors[slot] = static_cast<int>(mate.Cell);
           result.NeighborFaces[slot] = static_cast<signed char>(mate.Face);
           const bool isFolded = !entries[i].Flat && !mate.Flat && Folds(entries[i].Side, mate.Side);
           result.Folded[slot] = isFolded ? 1 : 0;
@@ -578,11 +597,14 @@ CellAdjacency MatchCellFaces(const CellFaceMesh& mesh)
   for (vtkIdType c = 0; c < mesh.NumberOfCells; ++c)
   {
     const vtkIdType first = mesh.FaceSlots * c;
-    const bool detached = std::any_of(hiddenFace.begin() + first,
-      hiddenFace.begin() + first + mesh.FaceSlots, [](unsigned char h) { return h != 0; });
+    bool detached = false;
+    for (int f = 0; f < mesh.FaceSlots; ++f)
+    {
+      detached = detached || hasFlag(first + f, HIDDEN);
+    }
     for (int f = 0; f < TableOf(mesh, c).Faces; ++f)
     {
-      if (result.Neighbors[first + f] < 0 && !zeroArea[first + f] && !detached)
+      if (result.Neighbors[first + f] < 0 && !hasFlag(first + f, ZERO_AREA) && !detached)
       {
         result.BoundaryFaces.push_back(c);
         result.BoundaryFaces.push_back(f);

@@ -77,10 +77,16 @@ struct CellFaceMesh
   const unsigned char* Flat = nullptr;
 };
 
+/**
+ * The most cells MatchCellFaces() takes: cells are numbered in int (4 bytes
+ * per face and per point-to-cell link; the GPU layouts number them in int too).
+ */
+constexpr vtkIdType MaximumAdjacencyCells = VTK_INT_MAX;
+
 /** What MatchCellFaces() finds: FaceSlots entries per cell in the face arrays. */
 struct CellAdjacency
 {
-  std::vector<vtkIdType> Neighbors;       // the cell across the face, -1: none
+  std::vector<int> Neighbors;             // the cell across the face, -1: none
   std::vector<signed char> NeighborFaces; // its face, -1: none
   std::vector<unsigned char> Folded;      // both cells on one side of the face
   std::vector<unsigned char> Inverted;    // one per cell (ppirayInvertedSheets.h)
@@ -97,6 +103,7 @@ struct CellAdjacency
   bool ByIds = false;
 };
 
+/** Empty (no face arrays) for more than MaximumAdjacencyCells cells: the caller says so. */
 PPIRAYFILTERS_EXPORT CellAdjacency MatchCellFaces(const CellFaceMesh& mesh);
 
 /**
@@ -153,7 +160,7 @@ PPIRAYFILTERS_EXPORT int SideOfFace(
  * a flat cell is wound away from that cell (the cells it lies on).
  */
 PPIRAYFILTERS_EXPORT vtkIdType NearestSolidCell(
-  vtkIdType cell, const vtkIdType* neighbors, int slots, const unsigned char* flat);
+  vtkIdType cell, const int* neighbors, int slots, const unsigned char* flat);
 
 /**
  * Six times the signed volume of a cell (`corners`: its point ids, `points`:

@@ -239,6 +239,12 @@ bool vtkHexahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   {
     return false;
   }
+  if (this->GetNumberOfHexahedra() > ppiray::MaximumAdjacencyCells)
+  {
+    vtkErrorMacro("Mesh too large: " << this->GetNumberOfHexahedra() << " cells (at most "
+                                     << ppiray::MaximumAdjacencyCells << ").");
+    return false;
+  }
   this->MarkFlatCells();
   laps.End("cells");
   this->Hidden = ppiray::HiddenCells(grid, this->CellIds);

@@ -92,6 +92,12 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   {
     return false;
   }
+  if (numberOfTets > ppiray::MaximumAdjacencyCells)
+  {
+    vtkErrorMacro("Mesh too large: " << numberOfTets << " tetrahedra (at most "
+                                     << ppiray::MaximumAdjacencyCells << ").");
+    return false;
+  }
 
   laps.End("tetrahedra");
   this->Length = ppiray::ComputeLocalPoints(grid->GetPoints(), this->Origin, this->LocalPoints);
@@ -199,12 +205,14 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   adjacency->Build(numberOfPoints, tets, numberOfTets, local, this->Degenerate.data());
   this->NumberOfNonManifoldFaces = adjacency->GetNumberOfNonManifoldFaces();
   this->NumberOfFoldedFaces = adjacency->GetNumberOfFoldedFaces();
-  const std::vector<vtkIdType>& neighbors = adjacency->GetNeighbors();
+  const std::vector<int>& neighbors = adjacency->GetNeighbors();
   const std::vector<signed char>& neighborFaces = adjacency->GetNeighborFaces();
   this->Neighbors.resize(neighbors.size());
-  for (size_t k = 0; k < neighbors.size(); ++k)
+  const vtkIdType slots = static_cast<vtkIdType>(neighbors.size());
+#pragma omp parallel for schedule(static)
+  for (vtkIdType k = 0; k < slots; ++k)
   {
-    const vtkIdType t = static_cast<vtkIdType>(k / 4);
+    const vtkIdType t = k / 4;
     const vtkIdType n = neighbors[k];
     const bool folded = n >= 0 && adjacency->IsFolded(t, k % 4);
     const bool inPlace = folded && adjacency->WalksBackInPlace(t, n);
@@ -364,7 +372,7 @@ void vtkTetrahedralCellTextures::LinkNonConformingFaces(const std::vector<vtkIdT
 
 //------------------------------------------------------------------------------
 bool vtkTetrahedralCellTextures::FacesTowards(
-  vtkIdType t, const int corner[3], const std::vector<vtkIdType>& neighbors) const
+  vtkIdType t, const int corner[3], const std::vector<int>& neighbors) const
 {
   // The first non-flat cell's centre on the triangle's positive side.
   const vtkIdType n = ppiray::NearestSolidCell(t, neighbors.data(), 4, this->Degenerate.data());

@@ -258,8 +258,7 @@ protected:
   // Whether the triangle of flat tetrahedron t's corners (local indices,
   // counter-clockwise) faces the first non-flat cell reached from t through
   // flat ones (ppiray::NearestSolidCell).
-  bool FacesTowards(
-    vtkIdType t, const int corner[3], const std::vector<vtkIdType>& neighbors) const;
+  bool FacesTowards(vtkIdType t, const int corner[3], const std::vector<int>& neighbors) const;
 
   int Layout = PLANES;
   double Origin[3] = { 0, 0, 0 };

@@ -63,7 +63,7 @@ public:
    * Neighbour of face f of tetrahedron t is GetNeighbors()[4 * t + f], -1 on
    * the boundary (and for left-out tetrahedra).
    */
-  const std::vector<vtkIdType>& GetNeighbors() const { return this->Get().Neighbors; }
+  const std::vector<int>& GetNeighbors() const { return this->Get().Neighbors; }
 
   /**
    * The neighbour's local face that face f of tetrahedron t is paired with,
