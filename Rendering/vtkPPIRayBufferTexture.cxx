@@ -81,8 +81,10 @@ bool vtkPPIRayBufferTexture::Upload(vtkOpenGLRenderWindow* context, const void* 
     {
       part.Texture->SetInternalFormat(components == 4 ? GL_RGBA32F : GL_R32F);
     }
+    // Its width in texels (the count GL_MAX_TEXTURE_BUFFER_SIZE bounds, which
+    // vtkTextureObject checks it against), as VTK's own mappers pass it.
     if (!part.Texture->CreateTextureBuffer(
-          static_cast<unsigned int>(count * components), components, vtkType, part.Buffer))
+          static_cast<unsigned int>(count), components, vtkType, part.Buffer))
     {
       this->Failure = "the GL could not make a buffer texture";
       this->ReleaseGraphicsResources(context);

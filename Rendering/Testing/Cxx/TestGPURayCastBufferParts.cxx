@@ -6,12 +6,18 @@
 // neighbours and field in 2) and native hexahedra (geometry in 4). Each
 // image must be the unsplit one exactly (the same texels, read from other
 // textures) and match the reference; a mesh needing more parts than the
-// mapper uses gets one error naming the sizes and draws nothing.
+// mapper uses gets one error naming the sizes and draws nothing. Each part
+// is a buffer texture as wide as its texels: the count
+// GL_MAX_TEXTURE_BUFFER_SIZE bounds and vtkTextureObject checks it against
+// (with values instead, a part near the limit logs an error from VTK).
 
 #include "PPIRayImageCompare.h"
 #include "PPIRayPixelCheck.h"
 #include "PPIRayTestScenes.h"
 #include "vtkCommand.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPPIRayBufferTexture.h"
+#include "vtkTextureObject.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
 
 #include <iostream>
@@ -71,6 +77,31 @@ int Split(const char* what, vtkUnstructuredGrid* grid, int hexahedronMode, vtkId
   errors += Compare("unsplit again", scene, grid, unsplit);
   return errors;
 }
+
+// 1,000 texels of 4 floats in parts of at most 300: 4 buffer textures 300,
+// 300, 300 and 100 texels wide.
+int PartWidths()
+{
+  ppiray_test::Scene scene(16, 16);
+  scene.Window->Render();
+  auto* context = vtkOpenGLRenderWindow::SafeDownCast(scene.Window);
+  std::vector<float> values(4 * 1000, 1.0f);
+  vtkPPIRayBufferTexture buffer;
+  const bool uploaded = buffer.Upload(context, values.data(), 1000, 4, VTK_FLOAT, 300);
+  std::string widths;
+  for (int p = 0; p < buffer.GetNumberOfParts(); ++p)
+  {
+    widths += std::to_string(buffer.GetTexture(p)->GetWidth()) + " ";
+  }
+  buffer.ReleaseGraphicsResources(context);
+  std::cout << "part widths: " << widths << "\n";
+  if (!uploaded || widths != "300 300 300 100 ")
+  {
+    std::cout << "FAILED: parts are not as wide as their texels (300 300 300 100)\n";
+    return 1;
+  }
+  return 0;
+}
 }
 
 int TestGPURayCastBufferParts(int argc, char* argv[])
@@ -81,7 +112,7 @@ int TestGPURayCastBufferParts(int argc, char* argv[])
   auto all = [](int, int, int) { return true; };
   auto tetrahedra = ppiray_test::VoxelTetrahedra(n, 1.0 / 6, origin, all, ppiray_test::Blob);
   const auto block = ppiray_test::BlobVoxelBlock(6);
-  int errors = 0;
+  int errors = PartWidths();
 
   // 1,296 tetrahedra: 5,184 geometry texels (5 parts of 1,200), 1,296
   // neighbour and field texels (2 parts each); in the compact layout 1,296
