@@ -104,23 +104,36 @@ int faceTriangles(int kind, int f)
   return CELL_FACES[base] < 0 ? 0 : (CELL_FACES[base + 3] < 0 ? 1 : 2);
 }
 
-// Corner indices of triangle t (0, 1) of face f of a cell of `kind` (0 for
-// a triangle the kind does not have: faceTriangles() tells).
-ivec3 faceTriangle(int kind, int f, int t, int mask)
+// A triangle of a cell's face, by its corners.
+struct Triangle
+{
+  vec3 a, b, c;
+};
+
+// The corners of triangle t (0, 1) of face f of the loaded cell of `kind`
+// (corner 0's for a triangle the kind does not have: faceTriangles() tells):
+// a quadrilateral (q0, q1, q2, q3) split along q0-q2 gives (q0, q1, q2),
+// (q0, q2, q3); along q1-q3 (its bit in `mask`), (q1, q2, q3), (q1, q3, q0).
+// In a mesh of one kind (the kind, f and t constants in unrolled loops) both
+// splits' corners are read at constant indices, from registers, and the
+// split chosen among the values; in a mixed mesh, whose face table is read
+// at run time anyway, the indices are chosen first and three corners read.
+Triangle faceTriangle(int kind, int f, int t, int mask)
 {
   int base = 24 * kind + 4 * f;
   bool second = ((mask >> f) & 1) == 1;
-  int q0 = CELL_FACES[base], q1 = CELL_FACES[base + 1];
-  int q2 = CELL_FACES[base + 2], q3 = CELL_FACES[base + 3];
-  if (MIXED_CELLS && q3 < 0)
+  ivec4 q = max(ivec4(CELL_FACES[base], CELL_FACES[base + 1], CELL_FACES[base + 2],
+                  CELL_FACES[base + 3]), 0);
+  ivec3 along02 = t == 0 ? q.xyz : q.xzw;
+  ivec3 along13 = t == 0 ? q.yzw : q.ywx;
+  if (MIXED_CELLS)
   {
-    return max(ivec3(q0, q1, q2), 0);
+    ivec3 v = CELL_FACES[base + 3] < 0 ? q.xyz : (second ? along13 : along02);
+    return Triangle(cellP[v.x], cellP[v.y], cellP[v.z]);
   }
-  if (second)
-  {
-    return t == 0 ? ivec3(q1, q2, q3) : ivec3(q1, q3, q0);
-  }
-  return t == 0 ? ivec3(q0, q1, q2) : ivec3(q0, q2, q3);
+  Triangle first = Triangle(cellP[along02.x], cellP[along02.y], cellP[along02.z]);
+  Triangle other = Triangle(cellP[along13.x], cellP[along13.y], cellP[along13.z]);
+  return second ? other : first;
 }
 
 int neighborCode(int h, int f)
@@ -136,12 +149,12 @@ ivec4 neighborListTexel(int i)
   return hexNeighborsTexel(i);
 }
 
-// Whether the ray reaches triangle v (corner indices into p) at parameter tf:
-// the crossing point is on the inner side of its three edges (with a
-// relative tolerance, so that an edge hit counts for both triangles).
-bool crossesTriangle(ivec3 v, vec3 origin, vec3 direction, float tf)
+// Whether the ray reaches triangle `tri` at parameter tf: the crossing
+// point is on the inner side of its three edges (with a relative tolerance,
+// so that an edge hit counts for both triangles).
+bool crossesTriangle(Triangle tri, vec3 origin, vec3 direction, float tf)
 {
-  vec3 a = cellP[v.x], b = cellP[v.y], c = cellP[v.z];
+  vec3 a = tri.a, b = tri.b, c = tri.c;
   vec3 normal = cross(b - a, c - a);
   vec3 x = origin + tf * direction;
   float tolerance = -1.0e-5 * dot(normal, normal);
@@ -149,26 +162,26 @@ bool crossesTriangle(ivec3 v, vec3 origin, vec3 direction, float tf)
     dot(cross(c - b, x - b), normal) >= tolerance && dot(cross(a - c, x - c), normal) >= tolerance;
 }
 
-// Where the ray meets the plane of triangle v (corner indices into p), t_f,
-// and n . r with n = (p_v1 - p_v0) x (p_v2 - p_v0), outward for a
-// right-handed cell: > 0 heading out, < 0 heading in.
-void trianglePlaneCrossing(ivec3 v, vec3 origin, vec3 direction, out float along, out float tf)
+// Where the ray meets the plane of triangle (a, b, c), t_f, and n . r with
+// n = (b - a) x (c - a), outward for a right-handed cell: > 0 heading out,
+// < 0 heading in.
+void trianglePlaneCrossing(Triangle tri, vec3 origin, vec3 direction, out float along, out float tf)
 {
-  vec3 normal = cross(cellP[v.y] - cellP[v.x], cellP[v.z] - cellP[v.x]);
+  vec3 normal = cross(tri.b - tri.a, tri.c - tri.a);
   along = dot(normal, direction);
-  tf = dot(normal, cellP[v.x] - origin) / along;
+  tf = dot(normal, tri.a - origin) / along;
 }
 
 // Where the ray meets the plane of triangle `side` of face f of the loaded
-// cell (trianglePlaneCrossing), and its corners v; along = 0 (heading
+// cell (trianglePlaneCrossing), and its corners; along = 0 (heading
 // neither out nor in) where the cell's kind has no such triangle. Without
 // an early return, and its callers' loops without `continue`: the shader
 // compiler then unrolls them (results.md, "Cost of the one march").
-void faceTriangleCrossing(Cell cell, int f, int side, vec3 origin, vec3 direction, out ivec3 v,
-  out float along, out float tf)
+void faceTriangleCrossing(Cell cell, int f, int side, vec3 origin, vec3 direction,
+  out Triangle tri, out float along, out float tf)
 {
-  v = faceTriangle(cellKind(cell), f, side, cellMask);
-  trianglePlaneCrossing(v, origin, direction, along, tf);
+  tri = faceTriangle(cellKind(cell), f, side, cellMask);
+  trianglePlaneCrossing(tri, origin, direction, along, tf);
   along = side < faceTriangles(cellKind(cell), f) ? along : 0.0;
 }
 
@@ -180,10 +193,10 @@ int boundaryEntry(int code, vec3 origin, vec3 direction, float resume, out int f
   int cell = code / (2 * FACES);
   face = (code - 2 * FACES * cell) / 2;
   Cell c = loadCell(cell);
-  ivec3 tri = faceTriangle(cellKind(c), face, code - 2 * FACES * cell - 2 * face, cellMask);
-  vec3 n = cross(cellP[tri.y] - cellP[tri.x], cellP[tri.z] - cellP[tri.x]);
+  Triangle tri = faceTriangle(cellKind(c), face, code - 2 * FACES * cell - 2 * face, cellMask);
+  vec3 n = cross(tri.b - tri.a, tri.c - tri.a);
   n = cellFlat && dot(n, direction) > 0.0 ? -n : n; // a flat cell has no outside
-  t = max(dot(n, cellP[tri.x] - origin) / min(dot(n, direction), -1.0e-30), resume);
+  t = max(dot(n, tri.a - origin) / min(dot(n, direction), -1.0e-30), resume);
   return cell;
 }
 
@@ -209,11 +222,11 @@ int nearestCrossedFace(Cell cell, int entryFace, vec3 origin, vec3 direction, fl
   {
     for (int side = 0; side < 2; ++side)
     {
-      ivec3 v;
+      Triangle tri;
       float along, tf;
-      faceTriangleCrossing(cell, f, side, origin, direction, v, along, tf);
+      faceTriangleCrossing(cell, f, side, origin, direction, tri, along, tf);
       if (along > 0.0 && tf < tHit && tf >= t - 1.0e-6 * abs(t) &&
-        exitCandidate(f, entryFace, tf, t) && crossesTriangle(v, origin, direction, tf))
+        exitCandidate(f, entryFace, tf, t) && crossesTriangle(tri, origin, direction, tf))
       {
         tHit = tf;
         hitFace = f;
@@ -234,8 +247,8 @@ int flatCellExit(Cell cell, int entryFace, vec3 x)
   {
     for (int side = 0; side < 2; ++side)
     {
-      ivec3 v = faceTriangle(cellKind(cell), f, side, cellMask);
-      score[2 * f + side] = smallestBarycentric(cellP[v.x], cellP[v.y], cellP[v.z], x, area2[2 * f + side]);
+      Triangle tri = faceTriangle(cellKind(cell), f, side, cellMask);
+      score[2 * f + side] = smallestBarycentric(tri.a, tri.b, tri.c, x, area2[2 * f + side]);
       area2[2 * f + side] = side < faceTriangles(cellKind(cell), f) ? area2[2 * f + side] : 0.0;
       largest = max(largest, area2[2 * f + side]);
     }
@@ -280,19 +293,20 @@ int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, boo
     return flatCellExit(cell, entryFace, origin + t * direction);
   }
   float tPlane = INFINITY, tIn = -INFINITY;
-  int planeFace = -1, planeSide = 0, inFace = -1;
+  int planeFace = -1, inFace = -1;
+  Triangle planeTriangle;
   for (int f = 0; f < 6; ++f)
   {
     for (int side = 0; side < 2; ++side)
     {
-      ivec3 v;
+      Triangle tri;
       float along, tf;
-      faceTriangleCrossing(cell, f, side, origin, direction, v, along, tf);
+      faceTriangleCrossing(cell, f, side, origin, direction, tri, along, tf);
       if (along > 0.0 && tf < tPlane && exitCandidate(f, entryFace, tf, t))
       {
         tPlane = tf;
         planeFace = f;
-        planeSide = side;
+        planeTriangle = tri;
       }
       if (backwards && f != entryFace && along < 0.0 && tf > tIn)
       {
@@ -307,8 +321,7 @@ int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, boo
     return across >= 0 ? across : inFace;
   }
   if (planeFace >= 0 && tPlane >= t - 1.0e-6 * abs(t) &&
-    crossesTriangle(faceTriangle(cellKind(cell), planeFace, planeSide, cellMask), origin,
-      direction, tPlane))
+    crossesTriangle(planeTriangle, origin, direction, tPlane))
   {
     tExit = max(tPlane, t);
     return planeFace;
@@ -393,21 +406,20 @@ float outsideFace(int h, int e, vec3 x)
   Cell cell = loadCell(h);
   if (cellFlat)
   {
-    ivec3 u = faceTriangle(cellKind(cell), e, 0, cellMask);
-    ivec3 w = faceTriangle(cellKind(cell), e, 1, cellMask);
-    float second = faceTriangles(cellKind(cell), e) > 1
-      ? outsideTriangle(cellP[w.x], cellP[w.y], cellP[w.z], x) : INFINITY;
-    return min(outsideTriangle(cellP[u.x], cellP[u.y], cellP[u.z], x), second);
+    Triangle u = faceTriangle(cellKind(cell), e, 0, cellMask);
+    Triangle w = faceTriangle(cellKind(cell), e, 1, cellMask);
+    float second = faceTriangles(cellKind(cell), e) > 1 ? outsideTriangle(w.a, w.b, w.c, x) : INFINITY;
+    return min(outsideTriangle(u.a, u.b, u.c, x), second);
   }
   float outside = -INFINITY;
   for (int f = 0; f < 6; ++f)
   {
     for (int side = 0; side < 2; ++side)
     {
-      ivec3 v = faceTriangle(cellKind(cell), f, side, cellMask);
-      vec3 n = normalize(cross(cellP[v.y] - cellP[v.x], cellP[v.z] - cellP[v.x]));
+      Triangle tri = faceTriangle(cellKind(cell), f, side, cellMask);
+      vec3 n = normalize(cross(tri.b - tri.a, tri.c - tri.a));
       bool other = f != e && side < faceTriangles(cellKind(cell), f);
-      outside = max(outside, other ? dot(n, x - cellP[v.x]) : -INFINITY);
+      outside = max(outside, other ? dot(n, x - tri.a) : -INFINITY);
     }
   }
   return outside;
@@ -427,9 +439,9 @@ float faceEntry(int h, int e, vec3 origin, vec3 direction, float tMin, out float
   }
   for (int side = 0; side < 2; ++side)
   {
-    ivec3 v;
+    Triangle tri;
     float along, tf;
-    faceTriangleCrossing(cell, e, side, origin, direction, v, along, tf);
+    faceTriangleCrossing(cell, e, side, origin, direction, tri, along, tf);
     if (along < 0.0)
     {
       te = min(te, max(tf, tMin));
