@@ -15,6 +15,82 @@ namespace
 using Vec2 = glm::dvec2;
 using Vec3 = glm::dvec3;
 
+// An edge by its point ids, the smaller first.
+using Edge = std::array<vtkIdType, 2>;
+
+Edge EdgeOf(vtkIdType p, vtkIdType q)
+{
+  return { std::min(p, q), std::max(p, q) };
+}
+
+// An edge's ids (each below 2^32) in one key.
+std::uint64_t Packed(const Edge& e)
+{
+  return (static_cast<std::uint64_t>(e[0]) << 32) | static_cast<std::uint64_t>(e[1]);
+}
+
+// Whether some corners of `faces` are at the same places with other ids;
+// then `merged` is `faces` with each such corner's id replaced by the
+// smallest id at its place.
+bool MergedPlaces(const double* points, const std::vector<ppiray::OpenFace>& faces,
+  std::vector<ppiray::OpenFace>& merged)
+{
+  std::vector<vtkIdType> ids;
+  for (const ppiray::OpenFace& face : faces)
+  {
+    ids.insert(ids.end(), face.Points.begin(), face.Points.begin() + 3 * face.Triangles);
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  auto placeOf = [&](vtkIdType id) {
+    return std::array<double, 3>{ points[3 * id], points[3 * id + 1], points[3 * id + 2] };
+  };
+  std::vector<vtkIdType> byPlace = ids;
+  std::sort(byPlace.begin(), byPlace.end(),
+    [&](vtkIdType a, vtkIdType b)
+    {
+      const auto pa = placeOf(a), pb = placeOf(b);
+      return pa != pb ? pa < pb : a < b;
+    });
+  std::vector<std::pair<vtkIdType, vtkIdType>> renamed; // id, smallest id at its place
+  for (size_t k = 1; k < byPlace.size(); ++k)
+  {
+    if (placeOf(byPlace[k]) == placeOf(byPlace[k - 1]))
+    {
+      const vtkIdType first = renamed.empty() || renamed.back().first != byPlace[k - 1]
+                                ? byPlace[k - 1]
+                                : renamed.back().second;
+      renamed.push_back({ byPlace[k], first });
+    }
+  }
+  if (renamed.empty())
+  {
+    return false;
+  }
+  std::sort(renamed.begin(), renamed.end());
+  merged = faces;
+  for (ppiray::OpenFace& face : merged)
+  {
+    for (int v = 0; v < 3 * face.Triangles; ++v)
+    {
+      auto found = std::lower_bound(
+        renamed.begin(), renamed.end(), std::make_pair(face.Points[v], vtkIdType(-1)));
+      face.Points[v] =
+        found != renamed.end() && found->first == face.Points[v] ? found->second : face.Points[v];
+    }
+  }
+  return true;
+}
+
+// No face matched to any.
+ppiray::FaceOverlaps NoOverlaps(vtkIdType count)
+{
+  ppiray::FaceOverlaps none;
+  none.Offsets.assign(count + 1, 0);
+  none.Covered.assign(count, 0);
+  return none;
+}
+
 // Plane, size and bounds of an open face.
 struct FaceGeometry
 {
@@ -161,6 +237,117 @@ bool FaceEachOther(
     }
   }
   return true;
+}
+
+// One side of a quadrilateral split into two triangles: its open faces
+// (one of two triangles, or two of one; -1: none), their cells, its two
+// triangles' point ids, its corners' (sorted) and the ends of the diagonal
+// the triangles share and of the other.
+struct Quadrilateral
+{
+  std::array<vtkIdType, 4> Corners;
+  std::array<vtkIdType, 2> Faces;
+  std::array<vtkIdType, 2> Cells;
+  std::array<vtkIdType, 6> Ids;
+  Edge Diagonal, Other;
+  Vec3 Area{ 0.0 }; // IsSide()
+};
+
+// The side made of the two triangles at ids[0..6) if they have four distinct
+// corners and share an edge.
+bool QuadrilateralOf(const vtkIdType ids[6], Quadrilateral& q)
+{
+  std::copy(ids, ids + 6, q.Ids.begin());
+  std::array<vtkIdType, 6> sorted = q.Ids;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::unique(sorted.begin(), sorted.end()) - sorted.begin() != 4)
+  {
+    return false;
+  }
+  std::copy(sorted.begin(), sorted.begin() + 4, q.Corners.begin());
+  // The diagonal: the corners in both triangles; the other: in one each.
+  vtkIdType shared[2], single[2];
+  int nShared = 0, nSingle = 0;
+  for (const vtkIdType c : q.Corners)
+  {
+    const bool first = std::find(ids, ids + 3, c) != ids + 3;
+    const bool second = std::find(ids + 3, ids + 6, c) != ids + 6;
+    if (first && second && nShared < 2)
+    {
+      shared[nShared++] = c;
+    }
+    else if (first != second && nSingle < 2)
+    {
+      single[nSingle++] = c;
+    }
+  }
+  q.Diagonal = EdgeOf(shared[0], shared[1]);
+  q.Other = EdgeOf(single[0], single[1]);
+  return nShared == 2 && nSingle == 2;
+}
+
+// Whether a quadrilateral's two triangles have area and lie within 60
+// degrees of each other (unit normals' dot product above 1/2): one side of
+// a surface, not two faces at a sharp edge; fills its area vector, the sum of
+// (b - a) x (c - a) / 2.
+bool IsSide(const double* points, Quadrilateral& q)
+{
+  Vec3 areas[2];
+  for (int t = 0; t < 2; ++t)
+  {
+    const Vec3 a = PointOf(points, q.Ids[3 * t]), b = PointOf(points, q.Ids[3 * t + 1]),
+               c = PointOf(points, q.Ids[3 * t + 2]);
+    areas[t] = 0.5 * glm::cross(b - a, c - a);
+  }
+  const double l0 = glm::length(areas[0]), l1 = glm::length(areas[1]);
+  q.Area = areas[0] + areas[1];
+  return l0 > 0 && l1 > 0 && glm::dot(areas[0], areas[1]) > 0.5 * l0 * l1;
+}
+
+// The corner of a one-triangle face not on edge e.
+vtkIdType OppositeCorner(const ppiray::OpenFace& face, const Edge& e)
+{
+  for (int v = 0; v < 3; ++v)
+  {
+    if (face.Points[v] != e[0] && face.Points[v] != e[1])
+    {
+      return face.Points[v];
+    }
+  }
+  return -1;
+}
+
+// Whether one-triangle faces a and b, sharing the edge (p, q), are wound
+// alike (the edge runs the other way in b).
+bool WoundAlike(const ppiray::OpenFace& a, const ppiray::OpenFace& b, vtkIdType p, vtkIdType q)
+{
+  auto runs = [](const ppiray::OpenFace& face, vtkIdType from, vtkIdType to)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      if (face.Points[e] == from && face.Points[(e + 1) % 3] == to)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  return runs(a, p, q) ? runs(b, q, p) : (runs(a, q, p) && runs(b, p, q));
+}
+
+// Whether two sides with the same corners face each other across a lens
+// (of zero thickness where they are split alike: a quadrilateral face
+// against two triangles): area vectors opposite, no cell on both sides.
+bool AcrossLens(const Quadrilateral& a, const Quadrilateral& b)
+{
+  for (const vtkIdType c : a.Cells)
+  {
+    if (c == b.Cells[0] || c == b.Cells[1])
+    {
+      return false;
+    }
+  }
+  return glm::dot(a.Area, b.Area) < 0.0;
 }
 
 // Buckets of a uniform grid holding the faces whose bounds meet them.
@@ -360,10 +547,152 @@ std::vector<vtkIdType> PairCoincidentFaces(const double* points, const std::vect
 }
 
 //------------------------------------------------------------------------------
-int AppendFaceList(std::vector<int>& neighbors, const std::vector<int>& codes, int listBase)
+FaceOverlaps MatchSplitQuadrilaterals(const double* points, const std::vector<OpenFace>& given)
+{
+  // Points at the same places as one id (a seam's duplicated points).
+  std::vector<OpenFace> merged;
+  const std::vector<OpenFace>& faces = MergedPlaces(points, given, merged) ? merged : given;
+  const vtkIdType count = static_cast<vtkIdType>(faces.size());
+  // The edges of one-triangle faces (point ids packed in 64 bits), sorted,
+  // with their faces (the two triangles of a side share one), and the
+  // diagonals of faces of two. Ids past 32 bits: no lenses matched.
+  std::vector<std::pair<std::uint64_t, vtkIdType>> edges;
+  std::vector<std::uint64_t> splits;
+  edges.reserve(3 * faces.size());
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const OpenFace& face = faces[i];
+    for (int v = 0; v < 3 * face.Triangles; ++v)
+    {
+      if (face.Points[v] < 0 || face.Points[v] > static_cast<vtkIdType>(UINT32_MAX))
+      {
+        return NoOverlaps(count);
+      }
+    }
+    Quadrilateral q;
+    if (face.Triangles == 2 && QuadrilateralOf(face.Points.data(), q))
+    {
+      splits.push_back(Packed(q.Diagonal));
+    }
+    for (int e = 0; face.Triangles == 1 && e < 3; ++e)
+    {
+      edges.push_back({ Packed(EdgeOf(face.Points[e], face.Points[(e + 1) % 3])), i });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::sort(splits.begin(), splits.end());
+  auto isEdge = [&](const Edge& e)
+  {
+    const std::uint64_t key = Packed(e);
+    auto found = std::lower_bound(
+      edges.begin(), edges.end(), key, [](const auto& a, std::uint64_t k) { return a.first < k; });
+    return found != edges.end() && found->first == key;
+  };
+  auto isSplit = [&](const Edge& e)
+  { return std::binary_search(splits.begin(), splits.end(), Packed(e)); };
+  // The sides. A side can face another only where its other diagonal is an
+  // edge of open triangles too or splits a face of two, or its own diagonal
+  // splits one (a face of two against two triangles): the sides of a
+  // boundary surface are not built.
+  std::vector<Quadrilateral> sides;
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    Quadrilateral q;
+    if (faces[i].Triangles == 2 && QuadrilateralOf(faces[i].Points.data(), q) &&
+        (isEdge(q.Diagonal) || isEdge(q.Other)) && IsSide(points, q))
+    {
+      q.Faces = { i, -1 };
+      q.Cells = { faces[i].Cell, faces[i].Cell };
+      sides.push_back(q);
+    }
+  }
+  for (size_t k = 0; k < edges.size();)
+  {
+    size_t n = 1;
+    while (k + n < edges.size() && edges[k + n].first == edges[k].first)
+    {
+      ++n;
+    }
+    const Edge diagonal = { static_cast<vtkIdType>(edges[k].first >> 32),
+      static_cast<vtkIdType>(edges[k].first & 0xFFFFFFFFull) };
+    const vtkIdType a = edges[k].second, b = edges[k + n - 1].second;
+    k += n;
+    if (n != 2)
+    {
+      continue;
+    }
+    const Edge other =
+      EdgeOf(OppositeCorner(faces[a], diagonal), OppositeCorner(faces[b], diagonal));
+    const vtkIdType ids[6] = { faces[a].Points[0], faces[a].Points[1], faces[a].Points[2],
+      faces[b].Points[0], faces[b].Points[1], faces[b].Points[2] };
+    Quadrilateral q;
+    if ((isEdge(other) || isSplit(other) || isSplit(diagonal)) &&
+        WoundAlike(faces[a], faces[b], diagonal[0], diagonal[1]) && QuadrilateralOf(ids, q) &&
+        IsSide(points, q))
+    {
+      q.Faces = { a, b };
+      q.Cells = { faces[a].Cell, faces[b].Cell };
+      sides.push_back(q);
+    }
+  }
+  std::sort(sides.begin(), sides.end(),
+    [](const Quadrilateral& a, const Quadrilateral& b) { return a.Corners < b.Corners; });
+  // Per face, the faces across; a face in two matches is left alone.
+  std::vector<std::array<vtkIdType, 2>> across(count, { -1, -1 });
+  std::vector<unsigned char> matches(count, 0);
+  for (size_t k = 0; k < sides.size();)
+  {
+    size_t n = 1;
+    while (k + n < sides.size() && sides[k + n].Corners == sides[k].Corners)
+    {
+      ++n;
+    }
+    if (n == 2 && AcrossLens(sides[k], sides[k + 1]))
+    {
+      for (int s = 0; s < 2; ++s)
+      {
+        const Quadrilateral &side = sides[k + s], &other = sides[k + 1 - s];
+        for (const vtkIdType f : side.Faces)
+        {
+          if (f >= 0)
+          {
+            across[f] = other.Faces;
+            matches[f] = static_cast<unsigned char>(std::min(matches[f] + 1, 2));
+          }
+        }
+      }
+    }
+    k += n;
+  }
+  FaceOverlaps result;
+  result.Covered.assign(count, 0);
+  result.Offsets.assign(count + 1, 0);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    result.Offsets[i + 1] = result.Offsets[i];
+    if (matches[i] != 1)
+    {
+      continue;
+    }
+    result.Covered[i] = 1;
+    for (const vtkIdType f : across[i])
+    {
+      if (f >= 0)
+      {
+        result.Across.push_back(f);
+        ++result.Offsets[i + 1];
+      }
+    }
+  }
+  return result;
+}
+
+//------------------------------------------------------------------------------
+int AppendFaceList(
+  std::vector<int>& neighbors, const std::vector<int>& codes, int listBase, bool lens)
 {
   const int code = listBase + static_cast<int>(neighbors.size() / 4);
-  neighbors.push_back(static_cast<int>(codes.size()));
+  neighbors.push_back(static_cast<int>(codes.size()) + (lens ? LensList() : 0));
   neighbors.insert(neighbors.end(), codes.begin(), codes.end());
   neighbors.resize(4 * ((neighbors.size() + 3) / 4), -1);
   return code;

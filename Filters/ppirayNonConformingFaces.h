@@ -16,9 +16,12 @@
  * when its overlaps add up to its area (within 1e-5): a ray leaving it
  * anywhere enters one of them. Faces at exactly the same places (a seam's
  * duplicated points) are paired first, planar or not
- * (PairCoincidentFaces()). Other non-planar faces (curved cells split by
- * different diagonals on each side) are not matched: they are not
- * coplanar.
+ * (PairCoincidentFaces()). A quadrilateral whose two sides are split along
+ * different diagonals (a curved face tetrahedralized differently on each
+ * side) is two surfaces with a thin lens between them that both cells or
+ * neither cover; each of its triangles is linked to the two across
+ * (MatchSplitQuadrilaterals()), and the march enters the one the ray
+ * crosses (listed_faces_fs.glsl).
  */
 #ifndef ppirayNonConformingFaces_h
 #define ppirayNonConformingFaces_h
@@ -55,6 +58,22 @@ PPIRAYFILTERS_EXPORT FaceOverlaps MatchNonConformingFaces(
   const double* points, const std::vector<OpenFace>& faces);
 
 /**
+ * Open faces that make one quadrilateral split along one diagonal on one
+ * side and along the other (or the same) on the other: per face, the faces
+ * across (1 or 2), all Covered. Points at the same places count as one
+ * (a seam). A side is a face of two triangles, or two one-triangle faces
+ * (of any cells) that share an edge (the only two open faces on it, wound
+ * alike, unit normals within 60 degrees); two sides with the same four
+ * corners face each other (area vectors opposite) and share no cell. Only
+ * sides whose other diagonal is an edge of open triangles too, or with a
+ * diagonal that splits an open face of two, are built (not those of a
+ * boundary surface). Corners on more than two sides, and faces in more
+ * than one match, are left alone.
+ */
+PPIRAYFILTERS_EXPORT FaceOverlaps MatchSplitQuadrilaterals(
+  const double* points, const std::vector<OpenFace>& faces);
+
+/**
  * Per open face, the other open face whose distinct corners are at the same
  * places (the same face through duplicated points: a seam), of another cell
  * and facing it (area vectors opposite); -1 where there is none or more than
@@ -65,12 +84,22 @@ PPIRAYFILTERS_EXPORT std::vector<vtkIdType> PairCoincidentFaces(
   const double* points, const std::vector<OpenFace>& faces);
 
 /**
+ * A face list's count carries this when its faces are the other side of a
+ * lens (MatchSplitQuadrilaterals()): the march enters the face the ray
+ * crosses, where it crosses it (listed_faces_fs.glsl).
+ */
+constexpr int LensList()
+{
+  return 1 << 16;
+}
+
+/**
  * Appends a list of neighbour codes to a neighbour array (their number n,
- * then the codes, padded with -1 to whole texels of 4) and returns the code
- * that names it: `listBase` + its first texel.
+ * plus LensList() for a lens, then the codes, padded with -1 to whole texels
+ * of 4) and returns the code that names it: `listBase` + its first texel.
  */
 PPIRAYFILTERS_EXPORT int AppendFaceList(
-  std::vector<int>& neighbors, const std::vector<int>& codes, int listBase);
+  std::vector<int>& neighbors, const std::vector<int>& codes, int listBase, bool lens = false);
 
 /** What LinkNonConformingFaces() did. */
 struct NonConformingLinks
@@ -79,6 +108,8 @@ struct NonConformingLinks
   vtkIdType Faces = 0;
   /** Of those, faces at the same places as the one across (PairCoincidentFaces()). */
   vtkIdType Coincident = 0;
+  /** Of those, the faces of a quadrilateral split otherwise across (MatchSplitQuadrilaterals()). */
+  vtkIdType Lenses = 0;
   /** Of those, the faces that need a list (more than one face across, or not covered). */
   vtkIdType Lists = 0;
   /** The longest list. */
@@ -90,8 +121,10 @@ struct NonConformingLinks
 /**
  * Links each open face to the open faces across it: a face at the same places
  * as another (PairCoincidentFaces()) gets its code, and `paired(i, j)` is
- * called for each such pair, both ways; of the others
- * (MatchNonConformingFaces()), a face that one face covers gets that face's
+ * called for each such pair, both ways; the faces of a quadrilateral split
+ * otherwise across (MatchSplitQuadrilaterals()) a lens list of the faces
+ * across; of the others (MatchNonConformingFaces()), a face that one face
+ * covers gets that face's
  * code, any other a list of their codes (AppendFaceList(); the march takes
  * the one the exit point lies in, or none: listed_faces_fs.glsl), at most
  * `maximumPieces` (else left open). `code(i)`: the neighbour code that
@@ -122,8 +155,34 @@ NonConformingLinks LinkNonConformingFaces(const double* points, const std::vecto
     ++links.Coincident;
     paired(i, partner[i]);
   }
-  const FaceOverlaps overlaps = MatchNonConformingFaces(points, rest);
   std::vector<int> codes;
+  const FaceOverlaps lenses = MatchSplitQuadrilaterals(points, rest);
+  std::vector<OpenFace> planar;
+  std::vector<vtkIdType> planarIndex;
+  for (vtkIdType r = 0; r < static_cast<vtkIdType>(rest.size()); ++r)
+  {
+    const vtkIdType i = restIndex[r];
+    if (!lenses.Covered[r])
+    {
+      planar.push_back(rest[r]);
+      planarIndex.push_back(i);
+      continue;
+    }
+    codes.clear();
+    for (vtkIdType k = lenses.Offsets[r]; k < lenses.Offsets[r + 1]; ++k)
+    {
+      codes.push_back(code(restIndex[lenses.Across[k]]));
+    }
+    neighbors[slot(i)] = AppendFaceList(neighbors, codes, listBase, true);
+    links.Covered[i] = 1;
+    ++links.Faces;
+    ++links.Lenses;
+    ++links.Lists;
+    links.MaximumPieces = std::max(links.MaximumPieces, static_cast<int>(codes.size()));
+  }
+  rest.swap(planar);
+  restIndex.swap(planarIndex);
+  const FaceOverlaps overlaps = MatchNonConformingFaces(points, rest);
   for (vtkIdType r = 0; r < static_cast<vtkIdType>(rest.size()); ++r)
   {
     const vtkIdType i = restIndex[r];

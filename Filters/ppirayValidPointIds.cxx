@@ -5,10 +5,12 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
+#include "vtkGenericCell.h"
 #include "vtkNew.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <map>
 #include <vector>
 
 namespace ppiray
@@ -54,5 +56,34 @@ vtkSmartPointer<vtkUnstructuredGrid> EmptyCellsWithInvalidPointIds(
   valid->ShallowCopy(grid);
   compat::SetCellsKeepingPolyhedra(valid, grid, types, kept, invalid);
   return valid;
+}
+
+//------------------------------------------------------------------------------
+ExtraPointIds CellsWithExtraPointIds(vtkUnstructuredGrid* grid)
+{
+  // The points of each type as VTK instantiates it (0: any number).
+  std::map<int, vtkIdType> typeIds;
+  vtkNew<vtkGenericCell> cell;
+  ExtraPointIds extra;
+  ForEachCell(grid,
+    [&](vtkIdType, int type, vtkIdType npts, const vtkIdType*)
+    {
+      auto found = typeIds.find(type);
+      if (found == typeIds.end())
+      {
+        cell->SetCellType(type);
+        found = typeIds.emplace(type, cell->GetNumberOfPoints()).first;
+      }
+      if (found->second > 0 && npts > found->second)
+      {
+        if (extra.Cells++ == 0)
+        {
+          extra.FirstType = type;
+          extra.FirstIds = npts;
+          extra.TypeIds = found->second;
+        }
+      }
+    });
+  return extra;
 }
 }

@@ -26,6 +26,24 @@ namespace ppiray
  */
 PPIRAYFILTERS_EXPORT vtkSmartPointer<vtkUnstructuredGrid> EmptyCellsWithInvalidPointIds(
   vtkUnstructuredGrid* grid, vtkIdType& invalidCells);
+
+/** What CellsWithExtraPointIds() found: how many, and the first of them. */
+struct ExtraPointIds
+{
+  vtkIdType Cells = 0;
+  int FirstType = 0;      // its cell type
+  vtkIdType FirstIds = 0; // the ids it lists
+  vtkIdType TypeIds = 0;  // the ids its type has
+};
+
+/**
+ * Cells of a type with a fixed number of points (a VTK_HEXAHEDRON's 8) that
+ * list more point ids than that, e.g. a 20-node hexahedron written as a
+ * VTK_HEXAHEDRON: VTK's cells, and so the mapper and the reference, use
+ * their first ids only, and vtkDataSetTriangleFilter triangulates them from
+ * parametric coordinates the type does not have (a tangled mesh).
+ */
+PPIRAYFILTERS_EXPORT ExtraPointIds CellsWithExtraPointIds(vtkUnstructuredGrid* grid);
 }
 
 #endif

@@ -294,6 +294,7 @@ void vtkHexahedralCellTextures::Clear()
   this->NumberOfSplitQuadrilaterals = 0;
   this->NumberOfReentryFaces = 0;
   this->NumberOfNonConformingFaces = 0;
+  this->NumberOfLensFaces = 0;
   this->MaximumPiecesPerFace = 0;
   this->NumberOfSingularFrames = 0;
   this->NumberOfFlatHexahedra = 0;
@@ -838,6 +839,7 @@ void vtkHexahedralCellTextures::LinkNonConformingFaces(std::vector<vtkIdType>& b
       [&](vtkIdType owner) { return std::binary_search(covered.begin(), covered.end(), owner); }),
     boundary.end());
   this->NumberOfNonConformingFaces = links.Faces;
+  this->NumberOfLensFaces = links.Lenses;
   this->MaximumPiecesPerFace = std::max(this->MaximumPiecesPerFace, links.MaximumPieces);
 }
 

@@ -168,6 +168,11 @@ public:
    * the split quadrilaterals').
    */
   vtkGetMacro(NumberOfNonConformingFaces, vtkIdType);
+  /**
+   * Of those, faces of a quadrilateral split along other diagonals on its
+   * two sides (a lens between them: ppiray::MatchSplitQuadrilaterals).
+   */
+  vtkGetMacro(NumberOfLensFaces, vtkIdType);
   vtkGetMacro(MaximumPiecesPerFace, int);
   /** Boundary faces with a reflex edge (ReentryFace()). */
   vtkGetMacro(NumberOfReentryFaces, vtkIdType);
@@ -322,6 +327,7 @@ protected:
   vtkIdType NumberOfSingularFrames = 0;
   vtkIdType NumberOfFlatHexahedra = 0;
   vtkIdType NumberOfNonConformingFaces = 0;
+  vtkIdType NumberOfLensFaces = 0;
   int MaximumPiecesPerFace = 0;
   vtkIdType NumberOfOtherCells = 0;
   vtkIdType NumberOfQuadraticCells = 0;

@@ -87,6 +87,7 @@ bool vtkTetrahedralCellTextures::BuildGeometry(vtkUnstructuredGrid* grid)
   this->MaximumPiecesPerFace = 0;
   this->NumberOfReentryFaces = 0;
   this->NumberOfNonConformingFaces = 0;
+  this->NumberOfLensFaces = 0;
   const vtkIdType numberOfTets = this->GetNumberOfTetrahedra();
   if (numberOfTets == 0 || !grid->GetPoints())
   {
@@ -367,6 +368,7 @@ void vtkTetrahedralCellTextures::LinkNonConformingFaces(const std::vector<vtkIdT
     linked[keys[i]] = linked[keys[i]] || links.Covered[i];
   }
   this->NumberOfNonConformingFaces = links.Faces;
+  this->NumberOfLensFaces = links.Lenses;
   this->MaximumPiecesPerFace = std::max(this->MaximumPiecesPerFace, links.MaximumPieces);
 }
 

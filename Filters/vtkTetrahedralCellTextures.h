@@ -203,6 +203,11 @@ public:
    */
   vtkGetMacro(NumberOfNonConformingFaces, vtkIdType);
   /**
+   * Of those, faces of a quadrilateral split along other diagonals on its
+   * two sides (a lens between them: ppiray::MatchSplitQuadrilaterals).
+   */
+  vtkGetMacro(NumberOfLensFaces, vtkIdType);
+  /**
    * Polyhedra split into tetrahedra (ppirayPolyhedra.h: a cone from an added
    * point at their centre; faces of five or more corners fanned from an added
    * point), counted in GetNumberOfSplitCells() too.
@@ -297,6 +302,7 @@ protected:
   vtkIdType NumberOfUnlinkedFaces = 0;
   vtkIdType NumberOfReentryFaces = 0;
   vtkIdType NumberOfNonConformingFaces = 0;
+  vtkIdType NumberOfLensFaces = 0;
   vtkIdType NumberOfSplitCells = 0;
   vtkIdType NumberOfQuadraticCells = 0;
 

@@ -1,6 +1,7 @@
 #include "vtkPPIRayCellBuffers.h"
 
 #include "ppirayConvexSurface.h"
+#include "ppirayNonConformingFaces.h"
 
 #include "vtkObject.h"
 #include "vtkOpenGLBufferObject.h"
@@ -67,6 +68,8 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
        << "const int REENTRY_FACE = " << layout.ReentryFace << ";\n"
        << "const int FACE_EDGES = " << layout.FaceEdges << ";\n"
        << "const bool REENTRY_EDGES = " << (features.ReentryEdges ? "true" : "false") << ";\n"
+       << "const bool LENS_FACES = " << (features.LensFaces ? "true" : "false") << ";\n"
+       << "const int LENS_LIST = " << ppiray::LensList() << ";\n"
        << "const int EXIT_LOOPS = "
        << std::max(pieceLoops * pieces + 1, features.ReentryEdges ? reentryLoops : 0) << ";\n";
   const std::vector<CellArray> arrays = this->GetCellArrays();

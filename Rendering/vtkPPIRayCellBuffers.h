@@ -78,6 +78,7 @@ public:
     bool Folds = false;         // folded faces walked back
     int MaximumSplitPieces = 0; // most pieces of a boundary face split by convexification
     bool ReentryEdges = false;  // boundary faces with reflex edges, re-entered across them
+    bool LensFaces = false;     // face lists across a lens (ppiray::MatchSplitQuadrilaterals)
   };
   virtual Features GetFeatures() const = 0;
 

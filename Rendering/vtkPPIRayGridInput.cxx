@@ -2,6 +2,7 @@
 
 #include "ppirayValidPointIds.h"
 
+#include "vtkCellTypes.h"
 #include "vtkDataArray.h"
 #include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
@@ -95,6 +96,17 @@ vtkUnstructuredGrid* vtkPPIRayGridInput::Validated(
     vtkErrorWithObjectMacro(
       reporter, "The input has infinite or NaN point coordinates; nothing is rendered.");
     return nullptr;
+  }
+  const ppiray::ExtraPointIds extra = ppiray::CellsWithExtraPointIds(grid);
+  if (extra.Cells > 0)
+  {
+    vtkWarningWithObjectMacro(reporter, << extra.Cells
+                                        << " cells list more point ids than their type has (a "
+                                        << vtkCellTypes::GetClassNameFromTypeId(extra.FirstType)
+                                        << " with " << extra.FirstIds << ", not " << extra.TypeIds
+                                        << "): only the first are used, as in VTK. A cell "
+                                           "with mid-edge nodes has its own type (a 20-node "
+                                           "hexahedron is a VTK_QUADRATIC_HEXAHEDRON).");
   }
   vtkIdType invalidCells = 0;
   this->ValidCells = ppiray::EmptyCellsWithInvalidPointIds(grid, invalidCells);

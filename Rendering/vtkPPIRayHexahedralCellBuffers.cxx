@@ -61,6 +61,7 @@ vtkPPIRayCellBuffers::Features vtkPPIRayHexahedralCellBuffers::GetFeatures() con
   features.Folds = this->Cells->GetNumberOfFoldedFaces() > 0;
   features.MaximumSplitPieces = this->Cells->GetMaximumPiecesPerFace();
   features.ReentryEdges = this->Cells->GetNumberOfReentryFaces() > 0;
+  features.LensFaces = this->Cells->GetNumberOfLensFaces() > 0;
   return features;
 }
 

@@ -85,6 +85,7 @@ vtkPPIRayCellBuffers::Features vtkPPIRayTetrahedralCellBuffers::GetFeatures() co
   features.Folds = this->Cells->GetNumberOfFoldedFaces() > 0;
   features.MaximumSplitPieces = this->Cells->GetMaximumPiecesPerFace();
   features.ReentryEdges = this->Cells->GetNumberOfReentryFaces() > 0;
+  features.LensFaces = this->Cells->GetNumberOfLensFaces() > 0;
   return features;
 }
 

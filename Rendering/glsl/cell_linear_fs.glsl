@@ -332,6 +332,25 @@ int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, boo
   return hitFace >= 0 ? hitFace : planeFace;
 }
 
+// Whether the ray heads out of the cell through every triangle of face f
+// (n . r > 1e-5 |n|, beyond rounding): entered by f, the cell lies behind it.
+bool headsOutOfFace(Cell cell, int f, vec3 direction)
+{
+  if (cellFlat)
+  {
+    return false;
+  }
+  bool leaves = true;
+  for (int side = 0; side < 2; ++side)
+  {
+    Triangle tri = faceTriangle(cellKind(cell), f, side, cellMask);
+    vec3 n = cross(tri.b - tri.a, tri.c - tri.a);
+    bool exists = side < faceTriangles(cellKind(cell), f);
+    leaves = leaves && (!exists || dot(n, direction) > 1.0e-5 * length(n));
+  }
+  return leaves;
+}
+
 bool hasField(Cell cell)
 {
   return cellC.x > EMPTY_CELL;

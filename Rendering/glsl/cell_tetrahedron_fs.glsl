@@ -125,6 +125,18 @@ int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, boo
   return exitFace;
 }
 
+// Whether the ray heads out of the cell through face f (n_f . r > 1e-5,
+// beyond rounding): entered by f, the cell lies behind it.
+bool headsOutOfFace(Cell cell, int f, vec3 direction)
+{
+  // Selected at constant indices: an indexed read would keep the planes in
+  // memory for the whole step loop.
+  vec3 n = f == 0 ? cellPlaneData[0].xyz
+                  : (f == 1 ? cellPlaneData[1].xyz
+                            : (f == 2 ? cellPlaneData[2].xyz : cellPlaneData[3].xyz));
+  return !isFlatCell(cell) && dot(n, direction) > 1.0e-5;
+}
+
 bool hasField(Cell cell)
 {
   return cellFieldData.w > EMPTY_CELL;

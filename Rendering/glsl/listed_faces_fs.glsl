@@ -57,9 +57,8 @@ int reentryAcrossEdge(int list, vec3 origin, vec3 direction, inout float t)
 // an edge between pieces goes to one of them. -1: none within rounding
 // (1e-5 of |t| + |x|): the ray leaves the mesh where pieces do not cover the
 // face. EXIT_LOOPS: SPLIT_PIECE_LOOPS per piece.
-int splitFacePiece(int list, vec3 x, float t)
+int splitFacePiece(int list, int n, vec3 x, float t)
 {
-  int n = neighborListTexel(list).x;
   int piece = -1;
   float leastOutside = INFINITY;
   for (int i = 0; i < MAXIMUM_SPLIT_PIECES && i < n; ++i)
@@ -77,11 +76,54 @@ int splitFacePiece(int list, vec3 x, float t)
   return leastOutside <= 1.0e-5 * (abs(t) + length(x)) ? piece : -1;
 }
 
+// Out through one side of a lens (a quadrilateral split along one diagonal
+// here and along the other across it, ppirayNonConformingFaces.h; its `n`
+// faces across listed in texel `list` after n): the face across that the
+// ray crosses first, at t or later, inside it to rounding (faceEntry), and t
+// moves to that crossing: the part of the lens that neither side's cells
+// cover is passed, the part both cover integrated once. Else (the ray is
+// inside the far side's cells already and its faces' planes are behind it,
+// or it grazes them) the face across least outside of which the exit point
+// lies, t kept; -1 where the ray heads into neither.
+int lensPiece(int list, int n, vec3 origin, vec3 direction, inout float t)
+{
+  ivec4 across = neighborListTexel(list);
+  int crossed = -1, nearest = -1;
+  float tCross = INFINITY, leastOutside = INFINITY;
+  for (int i = 0; i < 2 && i < n; ++i)
+  {
+    int c = across[i + 1] / FACES;
+    float te;
+    float outside = faceEntry(c, across[i + 1] - FACES * c, origin, direction, t, te);
+    if (outside <= 1.0e-5 * (abs(te) + length(origin + te * direction)) && te < tCross)
+    {
+      tCross = te;
+      crossed = across[i + 1];
+    }
+    if (outside < leastOutside)
+    {
+      leastOutside = outside;
+      nearest = across[i + 1];
+    }
+  }
+  loopsLeft -= SPLIT_PIECE_LOOPS * 2 + 1; // and the outer step loop's iteration
+  t = crossed >= 0 ? tCross : t;
+  return crossed >= 0 ? crossed : nearest;
+}
+
 // The cell and face a listed exit face `code`, left at t, enters (t moves
-// to a re-entry), or -1.
+// to a re-entry or past a lens), or -1.
 int listedFaceEntry(int code, vec3 origin, vec3 direction, inout float t)
 {
-  return REENTRY_EDGES && code >= REENTRY_FACE
-    ? reentryAcrossEdge(code - REENTRY_FACE, origin, direction, t)
-    : splitFacePiece(code - SPLIT_FACE, origin + t * direction, t);
+  if (REENTRY_EDGES && code >= REENTRY_FACE)
+  {
+    return reentryAcrossEdge(code - REENTRY_FACE, origin, direction, t);
+  }
+  int list = code - SPLIT_FACE;
+  int n = neighborListTexel(list).x;
+  if (LENS_FACES && n >= LENS_LIST)
+  {
+    return lensPiece(list, n - LENS_LIST, origin, direction, t);
+  }
+  return splitFacePiece(list, n, origin + t * direction, t);
 }

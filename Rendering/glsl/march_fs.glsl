@@ -15,6 +15,7 @@
 //                                            enters, and where
 //   int cellExit(cell, entryFace, ..., backwards, out tExit)
 //                                            the face the ray leaves it by
+//   bool headsOutOfFace(cell, f, direction) (tangled meshes)
 //   bool hasField(cell); bool fieldAlongRay(cell, ..., out Stretch)
 //                                            the field along a stretch
 //   vec3 fieldGradient(cell, x)              (isosurface shading)
@@ -24,7 +25,8 @@
 // and everything else lives here once: clipping planes and opaque geometry,
 // blend modes, isosurfaces and integration (stretch_fs.glsl), the loop
 // budget and continuations, early termination, empty cells, folds walked
-// back, split faces and re-entry across reflex edges (listed_faces_fs.glsl).
+// back, cells behind their entry face, split faces, lenses and re-entry
+// across reflex edges (listed_faces_fs.glsl).
 //
 // Neighbour codes (vtkPPIRayCellBuffers' layout): FACES c' + f', the cell
 // and face entered through a face; across a folded face -(FACES c' + f' + 2),
@@ -164,6 +166,11 @@ void marchRay()
       bool walkingBack = FOLDS && backwards;
       float tExit;
       int exitFace = cellExit(c, entryFace, origin, direction, t, walkingBack, tExit);
+      if ((FOLDS || FLAT_CELLS) && !walkingBack && entryFace >= 0 &&
+        headsOutOfFace(c, entryFace, direction))
+      {
+        tExit = t; // the cell lies behind the face it was entered by: none of it here
+      }
       if (!walkingBack && exitFace >= 0)
       {
         float tEnd = min(tExit, tStop);

@@ -10,7 +10,8 @@
 // (one error with their count; the other cells render as without them, in
 // the mapper and in the reference renderer), a unit distance of 0 (warning;
 // rendered with 1, in every blend mode), a scalar array with fewer values
-// than points (error, nothing drawn).
+// than points (error, nothing drawn), cells listing more point ids than
+// their type has (warning with the count; their first ids, as in VTK).
 
 #include "PPIRayImageCompare.h"
 #include "PPIRayTestScenes.h"
@@ -124,6 +125,31 @@ int TestGPURayCastBadInput(int argc, char* argv[])
   errors +=
     Expect(nn.Warnings.find("NaN") != std::string::npos && d.Max > 0 && Lit(nn.Image) > 1000,
       "NaN scalars: warning, the touching cells change, the rest renders");
+
+  // Cells listing more point ids than their type has (each tetrahedron with
+  // two more): one warning with the count; rendered through their first
+  // ids, as VTK's cells are, the same image.
+  {
+    vtkNew<vtkUnstructuredGrid> extra;
+    extra->SetPoints(good->GetPoints());
+    extra->GetPointData()->ShallowCopy(good->GetPointData());
+    for (vtkIdType c = 0; c < good->GetNumberOfCells(); ++c)
+    {
+      vtkIdType npts;
+      const vtkIdType* pts;
+      good->GetCellPoints(c, npts, pts);
+      const vtkIdType ids[6] = { pts[0], pts[1], pts[2], pts[3], pts[0], pts[2] };
+      extra->InsertNextCell(VTK_TETRA, 6, ids);
+    }
+    const Outcome x = RenderGrid(extra);
+    const auto diff = ppiray_test::Compare(reference.Image, x.Image);
+    std::cout << "extra point ids: " << x.Warnings << "max " << diff.Max << "\n";
+    errors += Expect(x.Warnings.find(std::to_string(good->GetNumberOfCells()) +
+                                     " cells list more point ids than their type has (a "
+                                     "vtkTetra with 6, not 4)") != std::string::npos &&
+                       x.Errors.empty() && diff.Max == 0,
+      "extra point ids: one warning with the count, the image of the first ids");
+  }
 
   // Unsupported 3D cells only (a pentagonal prism: 10 corners).
   vtkNew<vtkUnstructuredGrid> prisms;

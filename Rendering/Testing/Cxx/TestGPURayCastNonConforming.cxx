@@ -25,7 +25,16 @@
 //     numbered differently on the two sides: paired by their places
 //     (PairCoincidentFaces), split along the same diagonal on both sides
 //     (checked on the layout), one peel (two without: they are not
-//     coplanar), the image of the same cells sharing their points.
+//     coplanar), the image of the same cells sharing their points;
+//  7. a curved face split differently: two cubes of six tetrahedra whose
+//     shared quadrilateral (not planar) is split along one diagonal on one
+//     side and the other on the other, a lens between the two surfaces
+//     that both cubes cover or neither (MatchSplitQuadrilaterals): one peel
+//     (two without), exact (the apart lens integrated: p99 2.1, max 4.9);
+//     and against five tetrahedra, where a ray through the covered lens
+//     lands in the one around the diagonal with no face on it (without the
+//     fallback to the nearest face across: max 130); and across a seam
+//     (the right cube's own points, at the same places).
 
 #include "PPIRayExpectNative.h"
 #include "PPIRayPixelCheck.h"
@@ -90,6 +99,41 @@ struct GridBuilder
       ids[v] = this->Point(x[v][0], x[v][1], x[v][2]);
     }
     this->Grid->InsertNextCell(VTK_TETRA, 4, ids);
+  }
+  // The cube of size h at (x, y, z) as six tetrahedra around its diagonal
+  // (0, 0, 0) - (1, 1, 1), or, `mirrored`, the same six mirrored in y
+  // (around (0, 1, 0) - (1, 0, 1)): every face is split along a diagonal,
+  // the other one on the mirrored cube.
+  void SixTetrahedra(double x, double y, double z, double h, bool mirrored)
+  {
+    const int tets[6][4] = { { 0, 1, 2, 6 }, { 0, 2, 3, 6 }, { 0, 3, 7, 6 }, { 0, 7, 4, 6 },
+      { 0, 4, 5, 6 }, { 0, 5, 1, 6 } };
+    this->Tetrahedra(x, y, z, h, mirrored, tets);
+  }
+  // The cube as five tetrahedra: four corners cut off, (1, 3, 4, 6) left in
+  // the middle (its +x face split along (1, 0, 0) - (1, 1, 1) as above, the
+  // diagonal an edge of three tetrahedra).
+  void FiveTetrahedra(double x, double y, double z, double h)
+  {
+    const int tets[5][4] = { { 0, 1, 3, 4 }, { 2, 3, 1, 6 }, { 5, 4, 6, 1 }, { 7, 6, 4, 3 },
+      { 1, 3, 4, 6 } };
+    this->Tetrahedra(x, y, z, h, false, tets);
+  }
+  template<size_t N>
+  void Tetrahedra(double x, double y, double z, double h, bool mirrored, const int (&tets)[N][4])
+  {
+    const int corner[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
+      { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } };
+    for (const auto& tet : tets)
+    {
+      vtkIdType ids[4];
+      for (int v = 0; v < 4; ++v)
+      {
+        const int* c = corner[tet[v]];
+        ids[v] = this->Point(x + h * c[0], y + h * (mirrored ? 1 - c[1] : c[1]), z + h * c[2]);
+      }
+      this->Grid->InsertNextCell(VTK_TETRA, 4, ids);
+    }
   }
   // The grid with the linear field s = 0.2 + 0.3 x + 0.2 y + 0.1 z.
   vtkSmartPointer<vtkUnstructuredGrid> Done()
@@ -221,6 +265,36 @@ vtkSmartPointer<vtkUnstructuredGrid> FaceNextToFour()
   return b.Done();
 }
 
+// Two unit cubes side by side along x, each as six tetrahedra
+// (SixTetrahedra), their shared face split along different diagonals, its
+// corner (1, 1, 1) moved to (1 + bulge, 1, 1): the face is not planar and
+// its two sides are different surfaces, a thin lens between them that both
+// cells cover (bulge > 0: the left cube's triangles bulge into the right
+// cube) or neither (bulge < 0). `five`: the left cube as five tetrahedra,
+// so that a ray out of the right cube may land in the one of the three
+// around the diagonal that has no face on the quadrilateral. `seam`: the
+// right cube with its own points.
+vtkSmartPointer<vtkUnstructuredGrid> CurvedFace(double bulge, bool five = false, bool seam = false)
+{
+  GridBuilder b;
+  if (five)
+  {
+    b.FiveTetrahedra(0, 0, 0, 1);
+  }
+  else
+  {
+    b.SixTetrahedra(0, 0, 0, 1, false);
+  }
+  b.Part = seam ? 1 : 0;
+  b.SixTetrahedra(1, 0, 0, 1, true);
+  for (const int part : { 0, seam ? 1 : 0 })
+  {
+    b.Part = part;
+    b.Points->SetPoint(b.Point(1, 1, 1), 1 + bulge, 1, 1);
+  }
+  return b.Done();
+}
+
 int Fail(const std::string& what)
 {
   std::cerr << "FAILED: " << what << "\n";
@@ -264,6 +338,10 @@ int TestGPURayCastNonConforming(int argc, char* argv[])
     { "a tetrahedral face next to four", FaceNextToFour(), 1 + 4 },
     { "2 x 2 cubes against 3 x 3", sizes, 4 + 9 },
     { "2 x 2 cubes against 3 x 3, tetrahedralized", Tetrahedralized(sizes), 8 + 18 },
+    { "a curved face split differently, overlapping", CurvedFace(0.25), 4 },
+    { "a curved face split differently, apart", CurvedFace(-0.25), 4 },
+    { "a curved face split differently, overlapping, five tetrahedra", CurvedFace(0.25, true), 4 },
+    { "a curved face split differently, apart, a seam", CurvedFace(-0.25, false, true), 4 },
   };
   for (const Case& c : cases)
   {
