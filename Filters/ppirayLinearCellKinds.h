@@ -26,6 +26,8 @@
 #include "ppirayCellAdjacency.h" // for ppiray::CellFaceTable
 #include "vtkCellType.h"         // for VTK_HEXAHEDRON ...
 
+#include <algorithm> // for std::find
+
 namespace ppiray
 {
 enum LinearCellKind
@@ -116,6 +118,21 @@ inline int FaceSize(int kind, int f)
 {
   const int* q = LinearCellKindOf(kind).Face[f];
   return q[0] < 0 ? 0 : (q[3] < 0 ? 3 : 4);
+}
+
+/** The first corner of a kind's cell that is not on its face f. */
+inline int CornerOffFace(int kind, int f)
+{
+  const LinearCellKindInfo& info = LinearCellKindOf(kind);
+  for (int v = 0; v < info.Corners; ++v)
+  {
+    const int* face = info.Face[f];
+    if (std::find(face, face + 4, v) == face + 4)
+    {
+      return v;
+    }
+  }
+  return 0;
 }
 }
 

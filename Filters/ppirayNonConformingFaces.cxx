@@ -250,7 +250,8 @@ struct Quadrilateral
   std::array<vtkIdType, 2> Cells;
   std::array<vtkIdType, 6> Ids;
   Edge Diagonal, Other;
-  Vec3 Area{ 0.0 }; // IsSide()
+  Vec3 Area{ 0.0 };    // IsSide()
+  vtkIdType Apex = -1; // a corner of a cell of the side off it (OpenFace::Apex)
 };
 
 // The side made of the two triangles at ids[0..6) if they have four distinct
@@ -266,7 +267,7 @@ bool QuadrilateralOf(const vtkIdType ids[6], Quadrilateral& q)
   }
   std::copy(sorted.begin(), sorted.begin() + 4, q.Corners.begin());
   // The diagonal: the corners in both triangles; the other: in one each.
-  vtkIdType shared[2], single[2];
+  vtkIdType shared[2] = { -1, -1 }, single[2] = { -1, -1 };
   int nShared = 0, nSingle = 0;
   for (const vtkIdType c : q.Corners)
   {
@@ -281,9 +282,13 @@ bool QuadrilateralOf(const vtkIdType ids[6], Quadrilateral& q)
       single[nSingle++] = c;
     }
   }
+  if (nShared != 2 || nSingle != 2)
+  {
+    return false;
+  }
   q.Diagonal = EdgeOf(shared[0], shared[1]);
   q.Other = EdgeOf(single[0], single[1]);
-  return nShared == 2 && nSingle == 2;
+  return true;
 }
 
 // Whether a quadrilateral's two triangles have area and lie within 60
@@ -335,10 +340,28 @@ bool WoundAlike(const ppiray::OpenFace& a, const ppiray::OpenFace& b, vtkIdType 
   return runs(a, p, q) ? runs(b, q, p) : (runs(a, q, p) && runs(b, p, q));
 }
 
+// Whether side a's cell lies beyond side b: its apex on b's outer side
+// (A . (x - c) > 0, A b's area vector, c its corners' mean; true where no
+// apex is given).
+bool Beyond(const double* points, const Quadrilateral& a, const Quadrilateral& b)
+{
+  if (a.Apex < 0)
+  {
+    return true;
+  }
+  Vec3 centre(0.0);
+  for (int v = 0; v < 6; ++v)
+  {
+    centre += PointOf(points, b.Ids[v]) / 6.0;
+  }
+  return glm::dot(b.Area, PointOf(points, a.Apex) - centre) > 0.0;
+}
+
 // Whether two sides with the same corners face each other across a lens
 // (of zero thickness where they are split alike: a quadrilateral face
-// against two triangles): area vectors opposite, no cell on both sides.
-bool AcrossLens(const Quadrilateral& a, const Quadrilateral& b)
+// against two triangles): area vectors opposite, no cell on both sides,
+// each side's cell beyond the other.
+bool AcrossLens(const double* points, const Quadrilateral& a, const Quadrilateral& b)
 {
   for (const vtkIdType c : a.Cells)
   {
@@ -347,7 +370,7 @@ bool AcrossLens(const Quadrilateral& a, const Quadrilateral& b)
       return false;
     }
   }
-  return glm::dot(a.Area, b.Area) < 0.0;
+  return glm::dot(a.Area, b.Area) < 0.0 && Beyond(points, a, b) && Beyond(points, b, a);
 }
 
 // Buckets of a uniform grid holding the faces whose bounds meet them.
@@ -549,26 +572,30 @@ std::vector<vtkIdType> PairCoincidentFaces(const double* points, const std::vect
 //------------------------------------------------------------------------------
 FaceOverlaps MatchSplitQuadrilaterals(const double* points, const std::vector<OpenFace>& given)
 {
+  // Ids must fit 32 bits (edges are packed in 64; else no lenses matched).
+  const vtkIdType count = static_cast<vtkIdType>(given.size());
+  for (const OpenFace& face : given)
+  {
+    for (int v = 0; v < 3 * face.Triangles; ++v)
+    {
+      if (face.Points[v] < 0 || static_cast<std::uint64_t>(face.Points[v]) > UINT32_MAX)
+      {
+        return NoOverlaps(count);
+      }
+    }
+  }
   // Points at the same places as one id (a seam's duplicated points).
   std::vector<OpenFace> merged;
   const std::vector<OpenFace>& faces = MergedPlaces(points, given, merged) ? merged : given;
-  const vtkIdType count = static_cast<vtkIdType>(faces.size());
   // The edges of one-triangle faces (point ids packed in 64 bits), sorted,
   // with their faces (the two triangles of a side share one), and the
-  // diagonals of faces of two. Ids past 32 bits: no lenses matched.
+  // diagonals of faces of two.
   std::vector<std::pair<std::uint64_t, vtkIdType>> edges;
   std::vector<std::uint64_t> splits;
   edges.reserve(3 * faces.size());
   for (vtkIdType i = 0; i < count; ++i)
   {
     const OpenFace& face = faces[i];
-    for (int v = 0; v < 3 * face.Triangles; ++v)
-    {
-      if (face.Points[v] < 0 || face.Points[v] > static_cast<vtkIdType>(UINT32_MAX))
-      {
-        return NoOverlaps(count);
-      }
-    }
     Quadrilateral q;
     if (face.Triangles == 2 && QuadrilateralOf(face.Points.data(), q))
     {
@@ -603,6 +630,7 @@ FaceOverlaps MatchSplitQuadrilaterals(const double* points, const std::vector<Op
     {
       q.Faces = { i, -1 };
       q.Cells = { faces[i].Cell, faces[i].Cell };
+      q.Apex = faces[i].Apex;
       sides.push_back(q);
     }
   }
@@ -632,13 +660,15 @@ FaceOverlaps MatchSplitQuadrilaterals(const double* points, const std::vector<Op
     {
       q.Faces = { a, b };
       q.Cells = { faces[a].Cell, faces[b].Cell };
+      q.Apex = faces[a].Apex;
       sides.push_back(q);
     }
   }
   std::sort(sides.begin(), sides.end(),
     [](const Quadrilateral& a, const Quadrilateral& b) { return a.Corners < b.Corners; });
-  // Per face, the faces across; a face in two matches is left alone.
-  std::vector<std::array<vtkIdType, 2>> across(count, { -1, -1 });
+  // The matches (pairs of sides), then per face the faces across; a match
+  // with a face in another is left alone as a whole.
+  std::vector<std::array<size_t, 2>> pairs;
   std::vector<unsigned char> matches(count, 0);
   for (size_t k = 0; k < sides.size();)
   {
@@ -647,22 +677,45 @@ FaceOverlaps MatchSplitQuadrilaterals(const double* points, const std::vector<Op
     {
       ++n;
     }
-    if (n == 2 && AcrossLens(sides[k], sides[k + 1]))
+    if (n == 2 && AcrossLens(points, sides[k], sides[k + 1]))
     {
-      for (int s = 0; s < 2; ++s)
+      pairs.push_back({ k, k + 1 });
+      for (size_t s = k; s < k + 2; ++s)
       {
-        const Quadrilateral &side = sides[k + s], &other = sides[k + 1 - s];
-        for (const vtkIdType f : side.Faces)
+        for (const vtkIdType f : sides[s].Faces)
         {
-          if (f >= 0)
+          if (f >= 0 && matches[f] < 2)
           {
-            across[f] = other.Faces;
-            matches[f] = static_cast<unsigned char>(std::min(matches[f] + 1, 2));
+            ++matches[f];
           }
         }
       }
     }
     k += n;
+  }
+  std::vector<std::array<vtkIdType, 2>> across(count, { -1, -1 });
+  std::vector<unsigned char> linked(count, 0);
+  for (const auto& pair : pairs)
+  {
+    bool alone = true;
+    for (const size_t s : pair)
+    {
+      for (const vtkIdType f : sides[s].Faces)
+      {
+        alone = alone && (f < 0 || matches[f] == 1);
+      }
+    }
+    for (int s = 0; alone && s < 2; ++s)
+    {
+      for (const vtkIdType f : sides[pair[s]].Faces)
+      {
+        if (f >= 0)
+        {
+          across[f] = sides[pair[1 - s]].Faces;
+          linked[f] = 1;
+        }
+      }
+    }
   }
   FaceOverlaps result;
   result.Covered.assign(count, 0);
@@ -670,7 +723,7 @@ FaceOverlaps MatchSplitQuadrilaterals(const double* points, const std::vector<Op
   for (vtkIdType i = 0; i < count; ++i)
   {
     result.Offsets[i + 1] = result.Offsets[i];
-    if (matches[i] != 1)
+    if (!linked[i])
     {
       continue;
     }

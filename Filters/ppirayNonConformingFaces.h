@@ -41,6 +41,7 @@ struct OpenFace
   vtkIdType Cell;
   int Triangles; // 1 or 2
   std::array<vtkIdType, 6> Points;
+  vtkIdType Apex = -1; // a corner of its cell off the face (-1: not given)
 };
 
 /** What MatchNonConformingFaces() finds, per open face (indices into the faces). */
@@ -64,11 +65,14 @@ PPIRAYFILTERS_EXPORT FaceOverlaps MatchNonConformingFaces(
  * (a seam). A side is a face of two triangles, or two one-triangle faces
  * (of any cells) that share an edge (the only two open faces on it, wound
  * alike, unit normals within 60 degrees); two sides with the same four
- * corners face each other (area vectors opposite) and share no cell. Only
- * sides whose other diagonal is an edge of open triangles too, or with a
- * diagonal that splits an open face of two, are built (not those of a
- * boundary surface). Corners on more than two sides, and faces in more
- * than one match, are left alone.
+ * corners face each other across a lens: area vectors opposite, no cell
+ * on both, and each side's cells beyond the other side (their apexes on
+ * its outer side: not the top and bottom of one thin body). Sides are built
+ * only where they may face one (not on a boundary surface): two triangles
+ * whose other diagonal is an edge of open triangles too or splits an open
+ * face of two, or whose diagonal splits one; a face of two one of whose
+ * diagonals is an edge of open triangles. Corners on more than two sides,
+ * and matches with a face in another match, are left alone.
  */
 PPIRAYFILTERS_EXPORT FaceOverlaps MatchSplitQuadrilaterals(
   const double* points, const std::vector<OpenFace>& faces);
@@ -110,7 +114,7 @@ struct NonConformingLinks
   vtkIdType Coincident = 0;
   /** Of those, the faces of a quadrilateral split otherwise across (MatchSplitQuadrilaterals()). */
   vtkIdType Lenses = 0;
-  /** Of those, the faces that need a list (more than one face across, or not covered). */
+  /** Of those, the faces that need a list (lenses, more than one face across, or not covered). */
   vtkIdType Lists = 0;
   /** The longest list. */
   int MaximumPieces = 0;

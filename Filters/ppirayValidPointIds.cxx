@@ -5,7 +5,6 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
-#include "vtkGenericCell.h"
 #include "vtkNew.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -61,27 +60,25 @@ vtkSmartPointer<vtkUnstructuredGrid> EmptyCellsWithInvalidPointIds(
 //------------------------------------------------------------------------------
 ExtraPointIds CellsWithExtraPointIds(vtkUnstructuredGrid* grid)
 {
-  // The points of each type as VTK instantiates it (0: any number).
-  std::map<int, vtkIdType> typeIds;
-  vtkNew<vtkGenericCell> cell;
+  // The linear cell types with a fixed number of points, and that number.
+  static const std::map<int, vtkIdType> fixed = { { VTK_VERTEX, 1 }, { VTK_LINE, 2 },
+    { VTK_TRIANGLE, 3 }, { VTK_PIXEL, 4 }, { VTK_QUAD, 4 }, { VTK_TETRA, 4 }, { VTK_VOXEL, 8 },
+    { VTK_HEXAHEDRON, 8 }, { VTK_WEDGE, 6 }, { VTK_PYRAMID, 5 }, { VTK_PENTAGONAL_PRISM, 10 },
+    { VTK_HEXAGONAL_PRISM, 12 } };
   ExtraPointIds extra;
   ForEachCell(grid,
     [&](vtkIdType, int type, vtkIdType npts, const vtkIdType*)
     {
-      auto found = typeIds.find(type);
-      if (found == typeIds.end())
+      const auto found = fixed.find(type);
+      if (found == fixed.end() || npts <= found->second)
       {
-        cell->SetCellType(type);
-        found = typeIds.emplace(type, cell->GetNumberOfPoints()).first;
+        return;
       }
-      if (found->second > 0 && npts > found->second)
+      if (extra.Cells++ == 0)
       {
-        if (extra.Cells++ == 0)
-        {
-          extra.FirstType = type;
-          extra.FirstIds = npts;
-          extra.TypeIds = found->second;
-        }
+        extra.FirstType = type;
+        extra.FirstIds = npts;
+        extra.TypeIds = found->second;
       }
     });
   return extra;

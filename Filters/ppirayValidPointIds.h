@@ -37,8 +37,8 @@ struct ExtraPointIds
 };
 
 /**
- * Cells of a type with a fixed number of points (a VTK_HEXAHEDRON's 8) that
- * list more point ids than that, e.g. a 20-node hexahedron written as a
+ * Cells of a linear type with a fixed number of points (a VTK_HEXAHEDRON's
+ * 8) that list more point ids than that, e.g. a 20-node hexahedron written as a
  * VTK_HEXAHEDRON: VTK's cells, and so the mapper and the reference, use
  * their first ids only, and vtkDataSetTriangleFilter triangulates them from
  * parametric coordinates the type does not have (a tangled mesh).

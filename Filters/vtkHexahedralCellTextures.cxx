@@ -816,6 +816,7 @@ void vtkHexahedralCellTextures::LinkNonConformingFaces(std::vector<vtkIdType>& b
         face.Points[3 * t + v] = this->CornerIds[8 * h + TriangleCorner(kind, f, t, v, second)];
       }
     }
+    face.Apex = this->CornerIds[8 * h + ppiray::CornerOffFace(kind, f)];
     faces.push_back(face);
     owners.push_back(owner);
   }

@@ -99,8 +99,9 @@ public:
    */
   static constexpr int TurnBack() { return 1 << 29; }
   /**
-   * SplitFace() + i: a quadrilateral met by two triangular faces of other
-   * cells, its list at neighbour texel i: 2, then their codes.
+   * SplitFace() + i: a face met by faces of other cells, its list at
+   * neighbour texel i: their number n (plus ppiray::LensList() across a
+   * lens), then their codes (ppiray::AppendFaceList).
    */
   static constexpr int SplitFace() { return 1 << 30; }
   /** The most faces a list names (a face met by more is left open). */

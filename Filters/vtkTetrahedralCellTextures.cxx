@@ -353,6 +353,7 @@ void vtkTetrahedralCellTextures::LinkNonConformingFaces(const std::vector<vtkIdT
     {
       face.Points[v] = this->Tets[4 * t + corner[v]];
     }
+    face.Apex = this->Tets[4 * t + f]; // face f is opposite corner f
     faces.push_back(face);
     keys.push_back(4 * t + f);
   }

@@ -105,7 +105,9 @@ public:
    * neighbour not); NoNeighbor() on the boundary; SplitFace() + i for a
    * boundary face split into pieces (convexification), whose list starts
    * at texel i of GetNeighbors(): (n, code_1, code_2, ...), the codes of the
-   * n imaginary faces on it, in texels of 4 (at most MaximumPieces());
+   * n imaginary faces on it or faces across it (n plus
+   * ppiray::LensList() across a lens), in texels of 4 (at most
+   * MaximumPieces());
    * ReentryFace() + i for a boundary face with a reflex edge
    * (ppirayReflexEdges.h), texel i holding the codes of the boundary faces
    * across its edges (-1: none left).

@@ -55,7 +55,8 @@ std::string vtkPPIRayCellBuffers::LayoutDeclarations() const
   // and a loop over its four faces; a reflex edge's search is one of those
   // per edge of the face, and the step loop's iteration that reached it.
   const Features features = this->GetFeatures();
-  const int pieces = features.MaximumSplitPieces;
+  // A lens list names up to 2 faces across.
+  const int pieces = std::max(features.MaximumSplitPieces, features.LensFaces ? 2 : 0);
   const int pieceLoops = 1 + layout.PlaneLoops + 4;
   const int reentryLoops = 1 + layout.FaceEdges * pieceLoops;
   glsl << "const int PLANE_LOOPS = " << layout.PlaneLoops << ";\n"

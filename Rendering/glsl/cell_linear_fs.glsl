@@ -340,13 +340,13 @@ bool headsOutOfFace(Cell cell, int f, vec3 direction)
   {
     return false;
   }
-  bool leaves = true;
+  int triangles = faceTriangles(cellKind(cell), f);
+  bool leaves = triangles > 0;
   for (int side = 0; side < 2; ++side)
   {
     Triangle tri = faceTriangle(cellKind(cell), f, side, cellMask);
     vec3 n = cross(tri.b - tri.a, tri.c - tri.a);
-    bool exists = side < faceTriangles(cellKind(cell), f);
-    leaves = leaves && (!exists || dot(n, direction) > 1.0e-5 * length(n));
+    leaves = leaves && (side >= triangles || dot(n, direction) > 1.0e-5 * length(n));
   }
   return leaves;
 }

@@ -106,7 +106,7 @@ int lensPiece(int list, int n, vec3 origin, vec3 direction, inout float t)
       nearest = across[i + 1];
     }
   }
-  loopsLeft -= SPLIT_PIECE_LOOPS * 2 + 1; // and the outer step loop's iteration
+  loopsLeft -= SPLIT_PIECE_LOOPS * min(n, 2) + 1; // and the outer step loop's iteration
   t = crossed >= 0 ? tCross : t;
   return crossed >= 0 ? crossed : nearest;
 }

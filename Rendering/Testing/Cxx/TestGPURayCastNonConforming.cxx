@@ -34,7 +34,9 @@
 //     and against five tetrahedra, where a ray through the covered lens
 //     lands in the one around the diagonal with no face on it (without the
 //     fallback to the nearest face across: max 130); and across a seam
-//     (the right cube's own points, at the same places).
+//     (the right cube's own points, at the same places); a thin body whose
+//     top and bottom have the same four corners is not a lens (linked, it
+//     would have no boundary left and render nothing).
 
 #include "PPIRayExpectNative.h"
 #include "PPIRayPixelCheck.h"
@@ -295,6 +297,23 @@ vtkSmartPointer<vtkUnstructuredGrid> CurvedFace(double bulge, bool five = false,
   return b.Done();
 }
 
+// A thin body: the tetrahedron (0, 0, 0), (2, 0, 0.7), (2, 2, 0),
+// (0, 2, 0.7) split into four from its centre. Its top and bottom are two
+// pairs of triangles with the same four corners facing away from each
+// other: not a lens (each side's cells lie inside, not beyond the other).
+vtkSmartPointer<vtkUnstructuredGrid> ThinBody()
+{
+  using P = std::array<double, 3>;
+  GridBuilder b;
+  const P a = { 0, 0, 0 }, c = { 2, 0, 0.7 }, d = { 2, 2, 0 }, e = { 0, 2, 0.7 },
+          m = { 1, 1, 0.35 };
+  b.Tetra({ m, a, c, e });
+  b.Tetra({ m, c, d, e });
+  b.Tetra({ m, a, c, d });
+  b.Tetra({ m, a, d, e });
+  return b.Done();
+}
+
 int Fail(const std::string& what)
 {
   std::cerr << "FAILED: " << what << "\n";
@@ -342,6 +361,7 @@ int TestGPURayCastNonConforming(int argc, char* argv[])
     { "a curved face split differently, apart", CurvedFace(-0.25), 4 },
     { "a curved face split differently, overlapping, five tetrahedra", CurvedFace(0.25, true), 4 },
     { "a curved face split differently, apart, a seam", CurvedFace(-0.25, false, true), 4 },
+    { "a thin body (top and bottom with the same corners, not a lens)", ThinBody(), 0 },
   };
   for (const Case& c : cases)
   {
