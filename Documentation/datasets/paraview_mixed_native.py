@@ -12,15 +12,12 @@ Run: Module/run pvbatch Documentation/datasets/paraview_mixed_native.py OUTDIR
 import os
 import sys
 
-import numpy as np
 from paraview.simple import (Calculator, CreateView, GetColorTransferFunction, LegacyVTKReader,
-                             Render, SaveScreenshot, Show)
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
+                             Show)
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Plugin",
                                 "Testing", "Python"))
-from ppiray_pvtest import against_reference  # noqa: E402
+from ppiray_pvtest import native_and_split  # noqa: E402
 
 root = os.environ.get("PPIRAY_DATA_ROOT", "../shared/data")
 reader = LegacyVTKReader(FileNames=[os.path.join(root, "angularsector", "AngularSector.vtk")])
@@ -37,24 +34,4 @@ view.ResetCamera()
 view.CameraPosition = [2.0, -1.5, 1.2]
 view.CameraFocalPoint = [0, 0, 0]
 view.ResetCamera()
-out = sys.argv[1]
-images = {}
-for mode in ("Accurate", "Subdivide"):
-    display.HexahedronMode = mode
-    Render(view)
-    path = os.path.join(out, "angularsector_%s.png" % mode)
-    SaveScreenshot(path, view)
-    png = vtkPNGReader()
-    png.SetFileName(path)
-    png.Update()
-    images[mode] = vtk_to_numpy(png.GetOutput().GetPointData().GetScalars())[:, :3].astype(float)
-    import ppiray  # noqa: F401  (the mapper's Python class, for its counters)
-    mapper = display.GetClientSideObject().GetActiveRepresentation().GetActiveVolumeMapper()
-    print(mode, "native cells", mapper.GetStatistics().GetNumberOfNativeCells(), "tetrahedra",
-          mapper.GetStatistics().GetNumberOfTetrahedra(), "peels",
-          mapper.GetStatistics().GetNumberOfPeels(), "lit pixels",
-          int((images[mode].max(axis=1) > 0).sum()), "against the reference (covered, p99, max)",
-          against_reference(view, display, path, "zy", background=[0, 0, 0]))
-diff = np.abs(images["Accurate"] - images["Subdivide"])
-print("native against split: max %.0f, p99 %.1f, pixels > 8: %d"
-      % (diff.max(), np.percentile(diff, 99), int((diff.max(axis=1) > 8).sum())))
+native_and_split(view, display, sys.argv[1], "angularsector", "zy", background=[0, 0, 0])

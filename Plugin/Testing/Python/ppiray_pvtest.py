@@ -200,6 +200,31 @@ def against_reference(view, display, image_path, array, background=BACKGROUND,
     return int(covered.sum()), float(np.percentile(d, 99)), float(d.max())
 
 
+def native_and_split(view, display, folder, name, array, background=BACKGROUND):
+    """Renders `display` with Hexahedron Mode Accurate (native) and Subdivide
+    (split), saves each screenshot as folder/name_MODE.png and prints, per
+    mode, the cells the mapper rendered, its peels, the lit pixels and the
+    image against the reference (against_reference), then the difference
+    between the two images (max, p99, pixels above 8/255)."""
+    import numpy as np
+    images = {}
+    for mode in ("Accurate", "Subdivide"):
+        display.HexahedronMode = mode
+        Render(view)
+        path = os.path.join(folder, "%s_%s.png" % (name, mode))
+        SaveScreenshot(path, view)
+        images[mode] = read_rgb(path).reshape(-1, 3).astype(np.float64)
+        statistics = mapper_of(display).GetStatistics()
+        print(mode, "native cells", statistics.GetNumberOfNativeCells(), "tetrahedra",
+              statistics.GetNumberOfTetrahedra(), "peels", statistics.GetNumberOfPeels(),
+              "lit pixels", int((images[mode].max(axis=1) > 0).sum()),
+              "against the reference (covered, p99, max)",
+              against_reference(view, display, path, array, background=background))
+    diff = np.abs(images["Accurate"] - images["Subdivide"])
+    print("native against split: max %.0f, p99 %.1f, pixels > 8: %d"
+          % (diff.max(), np.percentile(diff, 99), int((diff.max(axis=1) > 8).sum())))
+
+
 def run(main, doc, argc):
     """Call main(*sys.argv[1:]) of a test script taking argc - 1 arguments
     (the usage is the last line of `doc`); exit with SKIP when it skips."""
