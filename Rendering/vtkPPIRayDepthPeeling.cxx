@@ -519,7 +519,9 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
   marchInputs(program, textures);
   vtkTextureObject* const targets[3] = { this->Accumulated[next], this->Exit[next],
     this->Continuation[next] };
-  march.Run(frame.TargetWidth, frame.TargetHeight, targets);
+  vtkTextureObject* const inputs[4] = { this->EntryTexture, this->Accumulated[this->Current],
+    this->Exit[this->Current], this->Continuation[this->Current] };
+  march.Run(context, frame.TargetWidth, frame.TargetHeight, inputs, targets);
   this->Times.Stop();
   for (auto* texture : textures)
   {

@@ -8,6 +8,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkPPIRayComputeProgram.h"
+#include "vtkPPIRayMarchQueue.h"
 #include "vtkSetGet.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -20,14 +21,11 @@
 #include "ray_fs.h"
 #include "transfer_function_fs.h"
 
-namespace
-{
-// A compute work group's invocations along x and y (march_compute_stage_cs.glsl).
-constexpr int WorkGroupWidth = 8, WorkGroupHeight = 8;
-}
-
 //------------------------------------------------------------------------------
-vtkPPIRayMarchShader::vtkPPIRayMarchShader() = default;
+vtkPPIRayMarchShader::vtkPPIRayMarchShader()
+  : Queue(new vtkPPIRayMarchQueue)
+{
+}
 
 //------------------------------------------------------------------------------
 vtkPPIRayMarchShader::~vtkPPIRayMarchShader() = default;
@@ -52,6 +50,8 @@ std::string vtkPPIRayMarchShader::Compose(const std::string& traversal,
   {
     // VTK's shader cache gives fragment shaders their version; this is ours.
     vtkShaderProgram::Substitute(march, "//VTK::System::Dec", "#version 430 core");
+    vtkShaderProgram::Substitute(
+      march, "//PPIRay::MarchQueue::Dec", vtkPPIRayMarchQueue::Declarations());
   }
   return march;
 }
@@ -85,10 +85,21 @@ bool vtkPPIRayMarchShader::ReadyCompute(
     }
     this->Compute = vtkSmartPointer<vtkPPIRayComputeProgram>::New();
     this->ComputeSource = source;
-    std::string why = "this OpenGL context has no compute shaders (GL 4.3)";
-    if (!vtkPPIRayComputeProgram::IsSupported(context) || !this->Compute->Build(source))
+    std::string why;
+    if (!vtkPPIRayComputeProgram::IsSupported(context))
     {
-      why = vtkPPIRayComputeProgram::IsSupported(context) ? this->Compute->GetError() : why;
+      why = "this OpenGL context has no compute shaders (GL 4.3)";
+    }
+    else if (!this->Compute->Build(source))
+    {
+      why = this->Compute->GetError();
+    }
+    else if (!this->Queue->Build(why) && why.empty())
+    {
+      why = "the ray queue pass does not build";
+    }
+    if (!why.empty())
+    {
       vtkWarningWithObjectMacro(reporter, "The march runs as a fragment shader: " << why << ".");
       this->Compute = nullptr;
       this->ComputeSource.clear();
@@ -139,7 +150,8 @@ vtkShaderProgram* vtkPPIRayMarchShader::GetProgram() const
 }
 
 //------------------------------------------------------------------------------
-void vtkPPIRayMarchShader::Run(int width, int height, vtkTextureObject* const targets[3])
+void vtkPPIRayMarchShader::Run(vtkOpenGLRenderWindow* context, int width, int height,
+  vtkTextureObject* const inputs[4], vtkTextureObject* const targets[3])
 {
   if (this->Built != ppiray::MarchCompute)
   {
@@ -152,13 +164,21 @@ void vtkPPIRayMarchShader::Run(int width, int height, vtkTextureObject* const ta
     glBindImageTexture(
       static_cast<GLuint>(i), targets[i]->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, formats[i]);
   }
+  this->Queue->Gather(context, width, height, inputs);
+  context->GetShaderCache()->ReadyShaderProgram(this->Compute);
   const int size[2] = { width, height };
   this->Compute->SetUniform2i("targetSize", size);
-  vtkPPIRayComputeProgram::Dispatch(width, height, WorkGroupWidth, WorkGroupHeight);
+  this->Queue->DispatchMarch();
   for (int i = 0; i < 3; ++i)
   {
     glBindImageTexture(static_cast<GLuint>(i), 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, formats[i]);
   }
+}
+
+//------------------------------------------------------------------------------
+size_t vtkPPIRayMarchShader::GetGPUBytes() const
+{
+  return this->Queue->GetGPUBytes();
 }
 
 //------------------------------------------------------------------------------
@@ -177,4 +197,5 @@ void vtkPPIRayMarchShader::ReleaseGraphicsResources(vtkWindow* window)
   }
   this->ComputeSource.clear();
   this->ComputeRefused = false;
+  this->Queue->ReleaseGraphicsResources(window);
 }

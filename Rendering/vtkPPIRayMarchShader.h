@@ -10,8 +10,9 @@
  * integration mode's segment integral (vtkPPIRaySegmentIntegrator), the
  * viewing ray and the stage substituted at their //PPIRay:: markers. The
  * stage is where the same march runs: a fragment shader over a full-screen
- * quad, or a compute shader over the target (march_fragment_stage_fs.glsl,
- * march_compute_stage_cs.glsl). The program is rebuilt only when the
+ * quad, or a compute shader over the rays of a ray queue
+ * (march_fragment_stage_fs.glsl, march_compute_stage_cs.glsl,
+ * vtkPPIRayMarchQueue). The program is rebuilt only when the
  * composed source changes. Internal to PPIRay::Rendering.
  */
 #ifndef vtkPPIRayMarchShader_h
@@ -26,6 +27,7 @@ class vtkObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkPPIRayComputeProgram;
+class vtkPPIRayMarchQueue;
 class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
@@ -62,10 +64,16 @@ public:
   /**
    * One march pass over a width x height target: the fragment stage draws
    * the quad into the framebuffer's three draw buffers (set by the caller);
-   * the compute stage stores into `targets` (accumulated, exit,
-   * continuation) bound as images.
+   * the compute stage lists the rays to march from `inputs` (entry code,
+   * previous accumulated colour, exit, continuation: active on their
+   * units) and stores into `targets` (accumulated, exit, continuation)
+   * bound as images.
    */
-  void Run(int width, int height, vtkTextureObject* const targets[3]);
+  void Run(vtkOpenGLRenderWindow* context, int width, int height, vtkTextureObject* const inputs[4],
+    vtkTextureObject* const targets[3]);
+
+  /** GPU memory of the compute stage's ray queue (0 until it ran). */
+  size_t GetGPUBytes() const;
 
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -82,7 +90,8 @@ private:
   vtkSmartPointer<vtkPPIRayComputeProgram> Compute;
   std::string ComputeSource;   // what Compute was built from
   bool ComputeRefused = false; // warned once: the fragment stage from then on
-  int Built = 0;               // ppiray::MarchFragment
+  std::unique_ptr<vtkPPIRayMarchQueue> Queue;
+  int Built = 0; // ppiray::MarchFragment
 };
 
 #endif

@@ -213,7 +213,7 @@ void vtkUnstructuredGridGPURayCastMapper::CollectStatistics()
   out.GPUMemorySize = static_cast<vtkIdType>(
     (in.Mesh.GetBuffers() ? in.Mesh.GetBuffers()->GetGPUBytes() : 0) +
     in.TransferFunction.GetGPUBytes() + (in.Integrator ? in.Integrator->GetGPUBytes() : 0) +
-    in.Peeling.GetGPUBytes());
+    in.Peeling.GetGPUBytes() + in.MarchShader.GetGPUBytes());
   out.CellArrayBytes =
     static_cast<vtkIdType>(in.Mesh.GetBuffers() ? in.Mesh.GetBuffers()->GetCellArrayBytes() : 0);
   for (int kind = 0; kind < vtkPPIRayPassTimes::NumberOfPasses; ++kind)

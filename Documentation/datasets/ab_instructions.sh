@@ -14,7 +14,10 @@
 # Options by environment: SIZE (128x128), MAPPER (ppiray-exact: no Psi table
 # to build under valgrind, the same march for native cells), MAPPER_B (B's
 # mapper, default MAPPER: one build's two mappers compared, e.g. MAPPER=
-# ppiray-subdivide MAPPER_B=ppiray with A = B).
+# ppiray-subdivide MAPPER_B=ppiray with A = B), STAGE (the march stage,
+# fragment or compute; default the mapper's), JIT=all (the instructions of
+# every JIT-compiled block summed: the march and the passes around it, e.g.
+# the compute stage's ray queue).
 set -euo pipefail
 a=$1
 b=$2
@@ -22,12 +25,15 @@ shift 2
 count() {
   local build=$1 mapper=$2 out
   out=$(mktemp)
+  local stage=()
+  [ -n "${STAGE:-}" ] && stage=(--march-stage "$STAGE")
   LP_NUM_THREADS=1 LD_LIBRARY_PATH="$build/lib" valgrind --tool=callgrind --smc-check=all \
     --callgrind-out-file="$out" "$build/bin/ppirayBenchmark" "${source[@]}" \
-    --size "${SIZE:-128x128}" --views 1 --mappers "$mapper" \
+    --size "${SIZE:-128x128}" --views 1 --mappers "$mapper" "${stage[@]}" \
     --transfer-function realistic >/dev/null 2>&1
-  callgrind_annotate "$out" 2>/dev/null | grep '???:0x' | grep -v '\.so' | head -1 |
-    awk '{gsub(/,/, "", $1); print $1}'
+  callgrind_annotate "$out" 2>/dev/null | grep '???:0x' | grep -v '\.so' |
+    head -"$([ "${JIT:-}" = all ] && echo 1000000 || echo 1)" |
+    awk '{gsub(/,/, "", $1); n += $1} END { printf "%.0f\n", n }'
   rm -f "$out"
 }
 for mesh in "$@"; do

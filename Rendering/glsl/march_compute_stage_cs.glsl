@@ -1,34 +1,35 @@
-// The march as a compute shader (GL 4.3): one invocation per pixel in 8 x 8
-// work groups over the target, its outputs stored into the three ping-pong
-// targets bound as images (the same texels the fragment stage writes).
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0, rgba32f) uniform writeonly image2D accumulatedTarget;
-layout(binding = 1, rgba32f) uniform writeonly image2D exitTarget;
-layout(binding = 2, rg32f) uniform writeonly image2D continuationTarget;
-uniform ivec2 targetSize;
+// The march as a compute shader (GL 4.3): one invocation per ray of the ray
+// queue (march_queue_cs.glsl: the pixels with an entry or a continuation,
+// in groups of MARCH_GROUP_SIZE, dispatched indirectly), its outputs stored
+// into the three ping-pong targets bound as images (the same texels the
+// fragment stage writes; the queue pass wrote every other pixel's).
+//PPIRay::MarchQueue::Dec
+layout(local_size_x = MARCH_GROUP_SIZE) in;
 
 vec2 texCoord; // pixel centre in [0, 1]^2, as the quad's interpolation gives it
 vec4 fragOutput0;
 vec4 fragOutput1;
 vec4 fragOutput2;
+ivec2 queuedPixel;
 
 ivec2 marchPixel()
 {
-  return ivec2(gl_GlobalInvocationID.xy);
+  return queuedPixel;
 }
 
 void marchRay();
 
 void main()
 {
-  ivec2 pixel = marchPixel();
-  if (any(greaterThanEqual(pixel, targetSize)))
+  if (gl_GlobalInvocationID.x >= rays)
   {
     return;
   }
-  texCoord = (vec2(pixel) + 0.5) / vec2(targetSize);
+  uint code = pixels[gl_GlobalInvocationID.x];
+  queuedPixel = ivec2(code % 65536u, code / 65536u);
+  texCoord = (vec2(queuedPixel) + 0.5) / vec2(targetSize);
   marchRay();
-  imageStore(accumulatedTarget, pixel, fragOutput0);
-  imageStore(exitTarget, pixel, fragOutput1);
-  imageStore(continuationTarget, pixel, fragOutput2);
+  imageStore(accumulatedTarget, queuedPixel, fragOutput0);
+  imageStore(exitTarget, queuedPixel, fragOutput1);
+  imageStore(continuationTarget, queuedPixel, fragOutput2);
 }

@@ -1,0 +1,114 @@
+#include "vtkPPIRayMarchQueue.h"
+
+#include "ppirayVTKCompatibility.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkPPIRayComputeProgram.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkWindow.h"
+#include PPIRAY_VTK_OPENGL_HEADER
+
+#include "march_queue_cs.h"
+#include "march_queue_dec_cs.h"
+
+#include <cstdint>
+
+namespace
+{
+// The list's header: the number of rays, then the march's indirect dispatch
+// (groups along x, y, z), as march_queue_dec_cs.glsl's RayQueue block lays it out.
+constexpr GLuint EmptyHeader[4] = { 0, 0, 1, 1 };
+constexpr GLintptr DispatchOffset = sizeof(GLuint);
+constexpr GLuint QueueBinding = 0;
+}
+
+//------------------------------------------------------------------------------
+vtkPPIRayMarchQueue::vtkPPIRayMarchQueue() = default;
+
+//------------------------------------------------------------------------------
+vtkPPIRayMarchQueue::~vtkPPIRayMarchQueue() = default;
+
+//------------------------------------------------------------------------------
+std::string vtkPPIRayMarchQueue::Declarations()
+{
+  return "#define MARCH_GROUP_SIZE " + std::to_string(MarchGroupSize) + "u\n" + march_queue_dec_cs;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPPIRayMarchQueue::Build(std::string& error)
+{
+  if (this->Program)
+  {
+    return true;
+  }
+  std::string source = march_queue_cs;
+  vtkShaderProgram::Substitute(source, "//PPIRay::MarchQueue::Dec", Declarations());
+  auto program = vtkSmartPointer<vtkPPIRayComputeProgram>::New();
+  if (!program->Build(source))
+  {
+    error = program->GetError();
+    return false;
+  }
+  this->Program = program;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayMarchQueue::Gather(
+  vtkOpenGLRenderWindow* context, int width, int height, vtkTextureObject* const inputs[4])
+{
+  const size_t bytes = sizeof(EmptyHeader) + sizeof(GLuint) * static_cast<size_t>(width) * height;
+  if (!this->Buffer)
+  {
+    glGenBuffers(1, &this->Buffer);
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffer);
+  if (bytes != this->Bytes)
+  {
+    glBufferData(
+      GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_COPY);
+    this->Bytes = bytes;
+  }
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(EmptyHeader), EmptyHeader);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, QueueBinding, this->Buffer);
+
+  context->GetShaderCache()->ReadyShaderProgram(this->Program);
+  const char* names[4] = { "entryTriangle", "previousAccumulated", "previousExit",
+    "previousContinuation" };
+  for (int i = 0; i < 4; ++i)
+  {
+    this->Program->SetUniformi(names[i], inputs[i]->GetTextureUnit());
+  }
+  const int size[2] = { width, height };
+  this->Program->SetUniform2i("targetSize", size);
+  vtkPPIRayComputeProgram::Dispatch(width, height, 8, 8);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayMarchQueue::DispatchMarch()
+{
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, QueueBinding, this->Buffer);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, this->Buffer);
+  glDispatchComputeIndirect(DispatchOffset);
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, QueueBinding, 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayMarchQueue::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Buffer)
+  {
+    glDeleteBuffers(1, &this->Buffer);
+    this->Buffer = 0;
+    this->Bytes = 0;
+  }
+  if (this->Program)
+  {
+    this->Program->ReleaseGraphicsResources(window);
+    this->Program = nullptr;
+  }
+}
