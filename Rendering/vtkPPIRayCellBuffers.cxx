@@ -18,6 +18,7 @@
 #include "listed_faces_fs.h"
 #include "march_common_fs.h"
 #include "march_fs.h"
+#include "march_pixels_fs.h"
 #include "projection_cubic_fs.h"
 #include "stretch_fs.h"
 
@@ -90,6 +91,7 @@ std::string vtkPPIRayCellBuffers::GetMarchShader(bool accurateCubics) const
   const Features features = this->GetFeatures();
   std::string march = march_fs;
   vtkShaderProgram::Substitute(march, "//PPIRay::MarchCommon::Impl", march_common_fs);
+  vtkShaderProgram::Substitute(march, "//PPIRay::MarchPixels::Impl", march_pixels_fs);
   vtkShaderProgram::Substitute(march, "//PPIRay::Cells::Dec",
     this->LayoutDeclarations() +
       "const bool FLAT_CELLS = " + (features.FlatCells ? "true" : "false") +

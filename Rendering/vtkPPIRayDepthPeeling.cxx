@@ -521,7 +521,7 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
     this->Continuation[next] };
   vtkTextureObject* const inputs[4] = { this->EntryTexture, this->Accumulated[this->Current],
     this->Exit[this->Current], this->Continuation[this->Current] };
-  march.Run(context, frame.TargetWidth, frame.TargetHeight, inputs, targets);
+  march.Run(context, fbo, frame.TargetWidth, frame.TargetHeight, inputs, targets);
   this->Times.Stop();
   for (auto* texture : textures)
   {

@@ -1,14 +1,19 @@
 #include "vtkPPIRayMarchQueue.h"
 
 #include "ppirayVTKCompatibility.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
 #include "vtkPPIRayComputeProgram.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkWindow.h"
 #include PPIRAY_VTK_OPENGL_HEADER
 
+#include "march_mask_fs.h"
+#include "march_pixels_fs.h"
 #include "march_queue_cs.h"
 #include "march_queue_dec_cs.h"
 
@@ -44,6 +49,7 @@ bool vtkPPIRayMarchQueue::Build(std::string& error)
   }
   std::string source = march_queue_cs;
   vtkShaderProgram::Substitute(source, "//PPIRay::MarchQueue::Dec", Declarations());
+  vtkShaderProgram::Substitute(source, "//PPIRay::MarchPixels::Impl", march_pixels_fs);
   auto program = vtkSmartPointer<vtkPPIRayComputeProgram>::New();
   if (!program->Build(source))
   {
@@ -98,8 +104,67 @@ void vtkPPIRayMarchQueue::DispatchMarch()
 }
 
 //------------------------------------------------------------------------------
+bool vtkPPIRayMarchQueue::Mask(vtkOpenGLRenderWindow* context,
+  vtkOpenGLFramebufferObject* framebuffer, int width, int height, vtkTextureObject* const inputs[4])
+{
+  if (!this->MaskQuad)
+  {
+    std::string source = march_mask_fs;
+    vtkShaderProgram::Substitute(source, "//PPIRay::MarchPixels::Impl", march_pixels_fs);
+    this->MaskQuad.reset(new vtkOpenGLQuadHelper(context, nullptr, source.c_str(), ""));
+  }
+  if (this->MaskSize[0] != width || this->MaskSize[1] != height)
+  {
+    this->MaskDepth->SetContext(context);
+    if (!this->MaskDepth->AllocateDepth(width, height, vtkTextureObject::Float32))
+    {
+      return false;
+    }
+    this->MaskSize[0] = width;
+    this->MaskSize[1] = height;
+  }
+  vtkShaderProgram* program = this->MaskQuad->Program;
+  if (!program || !context->GetShaderCache()->ReadyShaderProgram(program))
+  {
+    return false;
+  }
+  framebuffer->AddDepthAttachment(this->MaskDepth);
+  vtkOpenGLState* state = context->GetState();
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_ALWAYS);
+  state->vtkglDepthMask(GL_TRUE);
+  const char* names[4] = { "entryTriangle", "previousAccumulated", "previousExit",
+    "previousContinuation" };
+  for (int i = 0; i < 4; ++i)
+  {
+    program->SetUniformi(names[i], inputs[i]->GetTextureUnit());
+  }
+  this->MaskQuad->Render();
+  // The quad is drawn at depth 0.5: in front of a masked pixel's 1 only.
+  state->vtkglDepthFunc(GL_GREATER);
+  state->vtkglDepthMask(GL_FALSE);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayMarchQueue::EndMask(
+  vtkOpenGLRenderWindow* context, vtkOpenGLFramebufferObject* framebuffer)
+{
+  framebuffer->RemoveDepthAttachment();
+  context->GetState()->vtkglDisable(GL_DEPTH_TEST);
+  context->GetState()->vtkglDepthMask(GL_TRUE);
+}
+
+//------------------------------------------------------------------------------
 void vtkPPIRayMarchQueue::ReleaseGraphicsResources(vtkWindow* window)
 {
+  if (this->MaskQuad)
+  {
+    this->MaskQuad->ReleaseGraphicsResources(window);
+    this->MaskQuad.reset();
+  }
+  this->MaskDepth->ReleaseGraphicsResources(window);
+  this->MaskSize[0] = this->MaskSize[1] = 0;
   if (this->Buffer)
   {
     glDeleteBuffers(1, &this->Buffer);

@@ -150,12 +150,19 @@ vtkShaderProgram* vtkPPIRayMarchShader::GetProgram() const
 }
 
 //------------------------------------------------------------------------------
-void vtkPPIRayMarchShader::Run(vtkOpenGLRenderWindow* context, int width, int height,
-  vtkTextureObject* const inputs[4], vtkTextureObject* const targets[3])
+void vtkPPIRayMarchShader::Run(vtkOpenGLRenderWindow* context,
+  vtkOpenGLFramebufferObject* framebuffer, int width, int height, vtkTextureObject* const inputs[4],
+  vtkTextureObject* const targets[3])
 {
   if (this->Built != ppiray::MarchCompute)
   {
+    const bool masked = this->Queue->Mask(context, framebuffer, width, height, inputs);
+    context->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
     this->Quad->Render();
+    if (masked)
+    {
+      this->Queue->EndMask(context, framebuffer);
+    }
     return;
   }
   const GLenum formats[3] = { GL_RGBA32F, GL_RGBA32F, GL_RG32F };

@@ -24,6 +24,7 @@
 #include <string> // for std::string
 
 class vtkObject;
+class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkPPIRayComputeProgram;
@@ -69,10 +70,10 @@ public:
    * units) and stores into `targets` (accumulated, exit, continuation)
    * bound as images.
    */
-  void Run(vtkOpenGLRenderWindow* context, int width, int height, vtkTextureObject* const inputs[4],
-    vtkTextureObject* const targets[3]);
+  void Run(vtkOpenGLRenderWindow* context, vtkOpenGLFramebufferObject* framebuffer, int width,
+    int height, vtkTextureObject* const inputs[4], vtkTextureObject* const targets[3]);
 
-  /** GPU memory of the compute stage's ray queue (0 until it ran). */
+  /** GPU memory of the ray queue and the ray mask (0 until they ran). */
   size_t GetGPUBytes() const;
 
   void ReleaseGraphicsResources(vtkWindow* window);

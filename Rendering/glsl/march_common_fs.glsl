@@ -1,11 +1,12 @@
 // What both march passes (tetrahedra, hexahedra) share: the per-pixel inputs
 // of a peel and its two outputs.
 uniform isamplerBuffer boundaryFaces; // boundary triangle -> the cell and face it enters
-uniform sampler2D entryTriangle;      // entry code per pixel (entry and section passes)
 uniform sampler2D opaqueDepth;
-uniform sampler2D previousAccumulated; // colour of the earlier peels
-uniform sampler2D previousExit;        // where the earlier peel stopped
-uniform sampler2D previousContinuation; // where the last pass ran out of loops
+// entryTriangle: the entry code per pixel (entry and section passes);
+// previousAccumulated: the colour of the earlier peels; previousExit: where
+// the earlier peel stopped; previousContinuation: where the last pass ran
+// out of loops; and the targets of a pixel without a ray.
+//PPIRay::MarchPixels::Impl
 uniform int maximumSteps;
 
 // The cell layout: GEOMETRY_TEXELS, NEIGHBOR_TEXELS, FIELD_TEXELS per cell,
@@ -106,18 +107,16 @@ void writeContinuation(float continuation, int step)
 int enterPeel(ivec2 pixel, out vec4 before, out float resume, out int startCell,
   out int startFace, out bool backwards, out int steps)
 {
-  before = texelFetch(previousAccumulated, pixel, 0);
+  targetsWithoutRay(pixel, fragOutput0, fragOutput1, fragOutput2);
+  before = fragOutput0;
+  resume = fragOutput1.r;
   // Entry code: 0 none, else the bits 2 id + cell + 2^23 of a positive
   // normal float (exact for any id): a boundary triangle (entry_fs.glsl) or
   // the cell the ray starts in (cell = 1; section_fs.glsl).
   float entry = texelFetch(entryTriangle, pixel, 0).r;
-  fragOutput0 = before;
-  fragOutput1 = texelFetch(previousExit, pixel, 0);
-  resume = fragOutput1.r;
   startFace = -1;
   backwards = false;
   steps = 0;
-  fragOutput2 = vec4(0.0);
   vec2 continuation = texelFetch(previousContinuation, pixel, 0).rg;
   if (continuation.r > 0.0)
   {

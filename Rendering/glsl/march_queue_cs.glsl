@@ -1,20 +1,14 @@
 #version 430 core
 // Ray queue (compute stage): before a march pass, the pixels whose ray it
-// takes (an entry code, or a continuation the last pass left) are appended
-// to one list, so that the march's invocations, and the SIMD lanes and
-// warps that run them together, hold live rays only; every other pixel's
-// targets are written here as the march would write them (the earlier
-// peels' colour and exit passed through, no continuation;
-// march_common_fs.glsl, enterPeel()).
+// takes (march_pixels_fs.glsl) are appended to one list, so that the
+// march's invocations, and the SIMD lanes and warps that run them
+// together, hold rays only; this pass writes every other pixel's targets.
 //
 // Each work group counts its rays in shared memory and takes its slots with
 // one atomic, so the counter is contended once per group, not once per ray.
 layout(local_size_x = 8, local_size_y = 8) in;
 //PPIRay::MarchQueue::Dec
-uniform sampler2D entryTriangle;
-uniform sampler2D previousAccumulated;
-uniform sampler2D previousExit;
-uniform sampler2D previousContinuation;
+//PPIRay::MarchPixels::Impl
 
 shared uint groupRays;
 shared uint groupFirst;
@@ -29,9 +23,7 @@ void main()
 {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   bool inside = all(lessThan(pixel, targetSize));
-  bool live = inside &&
-    (texelFetch(entryTriangle, pixel, 0).r > 0.0 ||
-      texelFetch(previousContinuation, pixel, 0).r > 0.0);
+  bool live = inside && hasRay(pixel);
   if (gl_LocalInvocationIndex == 0u)
   {
     groupRays = 0u;
@@ -51,8 +43,10 @@ void main()
   }
   else if (inside)
   {
-    imageStore(accumulatedTarget, pixel, texelFetch(previousAccumulated, pixel, 0));
-    imageStore(exitTarget, pixel, texelFetch(previousExit, pixel, 0));
-    imageStore(continuationTarget, pixel, vec4(0.0));
+    vec4 accumulated, exit, continuation;
+    targetsWithoutRay(pixel, accumulated, exit, continuation);
+    imageStore(accumulatedTarget, pixel, accumulated);
+    imageStore(exitTarget, pixel, exit);
+    imageStore(continuationTarget, pixel, continuation);
   }
 }
