@@ -397,6 +397,7 @@ bool vtkPPIRayDepthPeeling::Unfinished(vtkOpenGLRenderWindow* context)
   GLuint samplesPassed = 0;
   glGetQueryObjectuiv(this->Query, GL_QUERY_RESULT, &samplesPassed);
   this->Times.Stop();
+  this->RaysAtMost = samplesPassed;
   return samplesPassed > 0;
 }
 
@@ -452,6 +453,8 @@ bool vtkPPIRayDepthPeeling::Enter(
   glGetQueryObjectuiv(this->Query, GL_QUERY_RESULT, &samplesPassed);
   this->Times.Stop();
   this->Layer = 1 - this->Layer;
+  // Fragments that passed, overlapping ones counted each: at least the rays.
+  this->RaysAtMost = samplesPassed;
   return samplesPassed > 0;
 }
 
@@ -460,6 +463,7 @@ bool vtkPPIRayDepthPeeling::EnterAtNearPlane(
   vtkOpenGLRenderWindow* context, const Frame& frame, vtkObject* reporter)
 {
   this->Times.Start(vtkPPIRayPassTimes::NearPlaneEntry);
+  this->RaysAtMost = static_cast<long long>(frame.TargetWidth) * frame.TargetHeight; // not counted
   vtkOpenGLShaderCache* cache = context->GetShaderCache();
   if (this->SectionProgram)
   {
@@ -521,7 +525,7 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
     this->Continuation[next] };
   vtkTextureObject* const inputs[4] = { this->EntryTexture, this->Accumulated[this->Current],
     this->Exit[this->Current], this->Continuation[this->Current] };
-  march.Run(context, fbo, frame.TargetWidth, frame.TargetHeight, inputs, targets);
+  march.Run(context, fbo, frame.TargetWidth, frame.TargetHeight, inputs, targets, this->RaysAtMost);
   this->Times.Stop();
   for (auto* texture : textures)
   {

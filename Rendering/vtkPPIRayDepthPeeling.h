@@ -155,6 +155,9 @@ private:
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> UnfinishedQuad;
   int Continuations = 0;
+  // At least the rays the next march pass takes (the last entry or
+  // continuation pass's query; the target's pixels where not counted).
+  long long RaysAtMost = 0;
   long long CellSteps = 0;
   vtkPPIRayPassTimes Times;
 

@@ -17,8 +17,6 @@
 #include "march_queue_cs.h"
 #include "march_queue_dec_cs.h"
 
-#include <cstdint>
-
 namespace
 {
 // The list's header: the number of rays, then the march's indirect dispatch
@@ -26,6 +24,19 @@ namespace
 constexpr GLuint EmptyHeader[4] = { 0, 0, 1, 1 };
 constexpr GLintptr DispatchOffset = sizeof(GLuint);
 constexpr GLuint QueueBinding = 0;
+// The queue pass's work groups: QueueGroupSide^2 pixels (march_queue_cs.glsl).
+constexpr int QueueGroupSide = 8;
+
+// march_pixels_fs.glsl's inputs, active on their texture units.
+void SetPixelInputs(vtkShaderProgram* program, vtkTextureObject* const inputs[4])
+{
+  const char* names[4] = { "entryTriangle", "previousAccumulated", "previousExit",
+    "previousContinuation" };
+  for (int i = 0; i < 4; ++i)
+  {
+    program->SetUniformi(names[i], inputs[i]->GetTextureUnit());
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -81,15 +92,10 @@ void vtkPPIRayMarchQueue::Gather(
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, QueueBinding, this->Buffer);
 
   context->GetShaderCache()->ReadyShaderProgram(this->Program);
-  const char* names[4] = { "entryTriangle", "previousAccumulated", "previousExit",
-    "previousContinuation" };
-  for (int i = 0; i < 4; ++i)
-  {
-    this->Program->SetUniformi(names[i], inputs[i]->GetTextureUnit());
-  }
+  SetPixelInputs(this->Program, inputs);
   const int size[2] = { width, height };
   this->Program->SetUniform2i("targetSize", size);
-  vtkPPIRayComputeProgram::Dispatch(width, height, 8, 8);
+  vtkPPIRayComputeProgram::Dispatch(width, height, QueueGroupSide, QueueGroupSide);
 }
 
 //------------------------------------------------------------------------------
@@ -133,12 +139,7 @@ bool vtkPPIRayMarchQueue::Mask(vtkOpenGLRenderWindow* context,
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_ALWAYS);
   state->vtkglDepthMask(GL_TRUE);
-  const char* names[4] = { "entryTriangle", "previousAccumulated", "previousExit",
-    "previousContinuation" };
-  for (int i = 0; i < 4; ++i)
-  {
-    program->SetUniformi(names[i], inputs[i]->GetTextureUnit());
-  }
+  SetPixelInputs(program, inputs);
   this->MaskQuad->Render();
   // The quad is drawn at depth 0.5: in front of a masked pixel's 1 only.
   state->vtkglDepthFunc(GL_GREATER);

@@ -15,7 +15,9 @@
  *   Declarations();
  * - fragment stage (Mask(), EndMask()): writes a depth of its own, 0 where a
  *   ray is, 1 elsewhere (march_mask_fs.glsl), and the march's quad is
- *   depth-tested against it, so fragments without a ray are not shaded.
+ *   depth-tested against it, so fragments without a ray are not shaded;
+ *   only where at most half the pixels can have a ray (MaskPays()), since
+ *   the mask pass costs a pass over the target.
  * Internal to PPIRay::Rendering.
  */
 #ifndef vtkPPIRayMarchQueue_h
@@ -65,6 +67,15 @@ public:
 
   /** Runs the bound march program over the listed rays. */
   void DispatchMarch();
+
+  /**
+   * Whether the fragment stage's mask pays for its pass: where at most half
+   * of the target's pixels can have a ray (`raysAtMost`).
+   */
+  static bool MaskPays(long long raysAtMost, int width, int height)
+  {
+    return 2 * raysAtMost <= static_cast<long long>(width) * height;
+  }
 
   /**
    * The fragment stage's mask: writes the depth of `framebuffer` (a depth

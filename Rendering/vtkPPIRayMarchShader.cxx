@@ -152,11 +152,12 @@ vtkShaderProgram* vtkPPIRayMarchShader::GetProgram() const
 //------------------------------------------------------------------------------
 void vtkPPIRayMarchShader::Run(vtkOpenGLRenderWindow* context,
   vtkOpenGLFramebufferObject* framebuffer, int width, int height, vtkTextureObject* const inputs[4],
-  vtkTextureObject* const targets[3])
+  vtkTextureObject* const targets[3], long long raysAtMost)
 {
   if (this->Built != ppiray::MarchCompute)
   {
-    const bool masked = this->Queue->Mask(context, framebuffer, width, height, inputs);
+    const bool masked = vtkPPIRayMarchQueue::MaskPays(raysAtMost, width, height) &&
+                        this->Queue->Mask(context, framebuffer, width, height, inputs);
     context->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
     this->Quad->Render();
     if (masked)

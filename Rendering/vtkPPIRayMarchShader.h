@@ -63,15 +63,17 @@ public:
   vtkShaderProgram* GetProgram() const;
 
   /**
-   * One march pass over a width x height target: the fragment stage draws
-   * the quad into the framebuffer's three draw buffers (set by the caller);
-   * the compute stage lists the rays to march from `inputs` (entry code,
-   * previous accumulated colour, exit, continuation: active on their
-   * units) and stores into `targets` (accumulated, exit, continuation)
+   * One march pass over a width x height target, over the pixels that have
+   * a ray (vtkPPIRayMarchQueue; read from `inputs`: entry code, previous
+   * accumulated colour, exit, continuation, active on their units;
+   * `raysAtMost` bounds their number): the fragment stage draws the quad
+   * into the framebuffer's three draw buffers (set by the caller); the
+   * compute stage stores into `targets` (accumulated, exit, continuation)
    * bound as images.
    */
   void Run(vtkOpenGLRenderWindow* context, vtkOpenGLFramebufferObject* framebuffer, int width,
-    int height, vtkTextureObject* const inputs[4], vtkTextureObject* const targets[3]);
+    int height, vtkTextureObject* const inputs[4], vtkTextureObject* const targets[3],
+    long long raysAtMost);
 
   /** GPU memory of the ray queue and the ray mask (0 until they ran). */
   size_t GetGPUBytes() const;
