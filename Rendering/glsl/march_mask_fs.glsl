@@ -4,7 +4,7 @@
 // quad, drawn at depth 0.5 and tested against it, is shaded where a ray is
 // only; this pass writes every other pixel's targets (march_pixels_fs.glsl).
 // The compute stage's ray queue (march_queue_cs.glsl) lists the same pixels.
-in vec2 texCoord;
+in vec2 texCoord; // pixel centre in [0, 1]^2
 
 out vec4 fragOutput0;
 out vec4 fragOutput1;
@@ -14,7 +14,7 @@ out vec4 fragOutput2;
 
 void main()
 {
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  ivec2 pixel = ivec2(texCoord * vec2(textureSize(entryTriangle, 0)));
   gl_FragDepth = hasRay(pixel) ? 0.0 : 1.0;
   targetsWithoutRay(pixel, fragOutput0, fragOutput1, fragOutput2);
 }
