@@ -306,6 +306,7 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
   int peel = 0;
   this->Continuations = 0;
   this->CellSteps = 0;
+  this->RaysMarched = this->PixelsMarched = 0;
   bool finished = true;
   if (frame.Section && !frame.Section->empty() && this->EnterAtNearPlane(context, frame, reporter))
   {
@@ -527,6 +528,9 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
     this->Exit[this->Current], this->Continuation[this->Current] };
   march.Run(context, fbo, frame.TargetWidth, frame.TargetHeight, inputs, targets, this->RaysAtMost);
   this->Times.Stop();
+  const long long pixels = static_cast<long long>(frame.TargetWidth) * frame.TargetHeight;
+  this->RaysMarched += std::min(this->RaysAtMost, pixels);
+  this->PixelsMarched += pixels;
   for (auto* texture : textures)
   {
     texture->Deactivate();

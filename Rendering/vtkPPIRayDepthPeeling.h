@@ -91,6 +91,14 @@ public:
    */
   long long GetNumberOfCellSteps() const { return this->CellSteps; }
 
+  /**
+   * The share of the target's pixels the last frame's march passes marched
+   * (at most: each pass's entry or continuation query), 0 to 1.
+   */
+  double GetRayShare() const
+  {
+    return this->PixelsMarched > 0 ? double(this->RaysMarched) / double(this->PixelsMarched) : 0.0;
+  }
   /** The last frame's GPU time per kind of pass (Frame::TimePasses; else 0). */
   const vtkPPIRayPassTimes& GetPassTimes() const { return this->Times; }
 
@@ -159,6 +167,7 @@ private:
   // continuation pass's query; the target's pixels where not counted).
   long long RaysAtMost = 0;
   long long CellSteps = 0;
+  long long RaysMarched = 0, PixelsMarched = 0; // over the frame's march passes
   vtkPPIRayPassTimes Times;
 
   vtkShaderProgram* SectionProgram = nullptr; // owned by the shader cache

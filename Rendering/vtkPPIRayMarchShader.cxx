@@ -5,14 +5,18 @@
 #include "ppirayVTKCompatibility.h"
 #include "vtkObject.h"
 #include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkPPIRayComputeProgram.h"
+#include "vtkPPIRayDepthPeeling.h"
 #include "vtkPPIRayMarchQueue.h"
 #include "vtkSetGet.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include PPIRAY_VTK_OPENGL_HEADER
+
+#include <functional> // std::hash
 
 #include "isosurface_fs.h"
 #include "march_compute_stage_cs.h"
@@ -61,6 +65,17 @@ bool vtkPPIRayMarchShader::Ready(vtkOpenGLRenderWindow* context, const std::stri
   const std::string& integration, const std::string& isoSurfaces, int blend, int stage,
   vtkObject* reporter)
 {
+  this->Requested = stage;
+  if (stage == ppiray::MarchAutomatic)
+  {
+    const std::hash<std::string> hash;
+    const size_t program = hash(traversal) ^ (hash(integration) * 31) ^ (hash(isoSurfaces) * 37) ^
+                           static_cast<size_t>(blend);
+    // Without timer queries nothing can be measured: the fragment stage.
+    stage = this->Choice.Next(program, !this->ComputeRefused &&
+                                         vtkPPIRayComputeProgram::IsSupported(context) &&
+                                         vtkOpenGLRenderTimer::IsSupported());
+  }
   if (stage == ppiray::MarchCompute && !this->ComputeRefused &&
       this->ReadyCompute(
         context, Compose(traversal, integration, isoSurfaces, blend, stage), reporter))
@@ -71,6 +86,22 @@ bool vtkPPIRayMarchShader::Ready(vtkOpenGLRenderWindow* context, const std::stri
   this->Built = ppiray::MarchFragment;
   return this->ReadyFragment(
     context, Compose(traversal, integration, isoSurfaces, blend, ppiray::MarchFragment), reporter);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPPIRayMarchShader::Probing(int stage) const
+{
+  return stage == ppiray::MarchAutomatic && this->Choice.Probing();
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayMarchShader::ObserveFrame(const vtkPPIRayDepthPeeling& peeling, size_t scene)
+{
+  if (this->Requested == ppiray::MarchAutomatic)
+  {
+    this->Choice.Observe(
+      this->Built, peeling.GetPassTimes().GetFrameMilliseconds(), scene, peeling.GetRayShare());
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -159,6 +190,8 @@ void vtkPPIRayMarchShader::Run(vtkOpenGLRenderWindow* context,
     const bool masked = vtkPPIRayMarchQueue::MaskPays(raysAtMost, width, height) &&
                         this->Queue->Mask(context, framebuffer, width, height, inputs);
     context->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+    const int size[2] = { width, height };
+    this->Quad->Program->SetUniform2i("targetSize", size);
     this->Quad->Render();
     if (masked)
     {
@@ -205,5 +238,6 @@ void vtkPPIRayMarchShader::ReleaseGraphicsResources(vtkWindow* window)
   }
   this->ComputeSource.clear();
   this->ComputeRefused = false;
+  this->Choice = vtkPPIRayStageChoice();
   this->Queue->ReleaseGraphicsResources(window);
 }

@@ -18,7 +18,8 @@
 #ifndef vtkPPIRayMarchShader_h
 #define vtkPPIRayMarchShader_h
 
-#include "vtkSmartPointer.h" // for vtkSmartPointer
+#include "vtkPPIRayStageChoice.h" // for vtkPPIRayStageChoice
+#include "vtkSmartPointer.h"      // for vtkSmartPointer
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -28,6 +29,7 @@ class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkPPIRayComputeProgram;
+class vtkPPIRayDepthPeeling;
 class vtkPPIRayMarchQueue;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -48,14 +50,29 @@ public:
 
   /**
    * Builds (when the source changed) and binds the program of the composed
-   * shader in `stage` (ppiray::MarchStage; MarchAutomatic: the fragment
-   * stage); a compute stage the context cannot run or compile gives the
-   * fragment stage, with one warning. False (reported) when no program
-   * builds.
+   * shader in `stage` (ppiray::MarchStage; MarchAutomatic: the one
+   * vtkPPIRayStageChoice gives for this frame); a compute stage asked for
+   * that the context cannot run, or that does not compile, gives the
+   * fragment stage, with one warning (automatic: silently where the context
+   * has no compute shaders). False (reported) when no program builds.
    */
   bool Ready(vtkOpenGLRenderWindow* context, const std::string& traversal,
     const std::string& integration, const std::string& isoSurfaces, int blend, int stage,
     vtkObject* reporter);
+
+  /** Whether the next frame in `stage` must be timed (an automatic stage's probe). */
+  bool Probing(int stage) const;
+
+  /**
+   * What the frame `peeling` drew with the program last readied cost: its
+   * passes' GPU time and share of pixels marched, for `scene`
+   * (vtkPPIRayStageChoice::SceneKey; the automatic stage's measurement,
+   * vtkPPIRayStageChoice::Observe).
+   */
+  void ObserveFrame(const vtkPPIRayDepthPeeling& peeling, size_t scene);
+
+  /** The automatic stage's choice and its probe. */
+  const vtkPPIRayStageChoice& GetChoice() const { return this->Choice; }
 
   /** The stage of the program last readied: MarchFragment or MarchCompute. */
   int GetStage() const { return this->Built; }
@@ -95,6 +112,8 @@ private:
   bool ComputeRefused = false; // warned once: the fragment stage from then on
   std::unique_ptr<vtkPPIRayMarchQueue> Queue;
   int Built = 0; // ppiray::MarchFragment
+  int Requested = 0;
+  vtkPPIRayStageChoice Choice;
 };
 
 #endif

@@ -216,11 +216,7 @@ void vtkUnstructuredGridGPURayCastMapper::CollectStatistics()
     in.Peeling.GetGPUBytes() + in.MarchShader.GetGPUBytes());
   out.CellArrayBytes =
     static_cast<vtkIdType>(in.Mesh.GetBuffers() ? in.Mesh.GetBuffers()->GetCellArrayBytes() : 0);
-  for (int kind = 0; kind < vtkPPIRayPassTimes::NumberOfPasses; ++kind)
-  {
-    out.PassTimes[kind] = in.Peeling.GetPassTimes().GetMilliseconds(kind);
-    out.PassCounts[kind] = in.Peeling.GetPassTimes().GetCount(kind);
-  }
+  out.CollectTimes(in.Peeling.GetPassTimes(), this->TimePasses != 0, in.MarchShader.GetChoice());
   out.Modified();
 }
 
@@ -418,7 +414,7 @@ void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolum
   settings.MaximumPeels = this->MaximumNumberOfPeels;
   settings.MaximumSteps = this->MaximumNumberOfSteps;
   settings.CountCellSteps = this->CountCellSteps != 0;
-  settings.TimePasses = this->TimePasses != 0;
+  settings.TimePasses = this->TimePasses != 0 || in.MarchShader.Probing(this->MarchStage);
   settings.ImageSampleDistance = this->ImageSampleDistance;
   settings.ClippingPlanes = this->ClippingPlanes;
   if (!in.MarchShader.Ready(context,
@@ -457,6 +453,9 @@ void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolum
   statistics.NumberOfPeels = std::max(
     0, in.Peeling.Render(context, frame, *in.Cells, in.MarchShader, marchInputs, cut, this));
   statistics.MarchStage = in.MarchShader.GetStage();
+  in.MarchShader.ObserveFrame(
+    in.Peeling, vtkPPIRayStageChoice::SceneKey(
+                  in.Mesh.GetNumberOfTetrahedra(), in.Mesh.GetNumberOfNativeCells()));
   statistics.NumberOfContinuations = in.Peeling.GetNumberOfContinuations();
   statistics.NumberOfCellSteps = static_cast<vtkIdType>(in.Peeling.GetNumberOfCellSteps());
   in.GridInput.ObserveFrame(statistics.NumberOfPeels, in.Mesh.GetNumberOfHexahedra() > 0);

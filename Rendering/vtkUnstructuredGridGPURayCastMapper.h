@@ -185,9 +185,16 @@ public:
    *   targets; where the context has no compute shaders or the shader does
    *   not build, one warning and the fragment stage;
    * - MARCH_STAGE_AUTOMATIC (default): the stage measured faster where the
-   *   mapper runs (results.md, "March stages"): the fragment stage today.
-   * GetStatistics()->GetMarchStage() says which ran. Images agree to float
-   * rounding.
+   *   mapper runs, for the scene on screen: the first six frames of a scene
+   *   alternate the stages, every pass timed (GL timer queries), and the
+   *   stage of the faster best frame is kept; a new march program, target
+   *   size or mesh geometry, or a share of pixels marched that changes by
+   *   more than a factor of two, measures again. The fragment stage, without
+   *   a probe, where the context has no compute shaders or timer queries.
+   *   GetStatistics()->GetChosenMarchStage() and GetMarchStageProbeTime()
+   *   report the choice.
+   * GetStatistics()->GetMarchStage() says which ran. Both stages cast the
+   * same rays: images agree to float rounding (identical on llvmpipe).
    */
   enum MarchStages
   {

@@ -2,6 +2,7 @@
 
 #include "vtkObjectFactory.h"
 #include "vtkPPIRayPassTimes.h"
+#include "vtkPPIRayStageChoice.h"
 
 vtkStandardNewMacro(vtkUnstructuredGridGPURayCastStatistics);
 
@@ -17,6 +18,28 @@ static_assert(
     int(vtkUnstructuredGridGPURayCastStatistics::NUMBER_OF_PASS_KINDS) ==
       vtkPPIRayPassTimes::NumberOfPasses,
   "one set of pass kinds");
+
+//------------------------------------------------------------------------------
+void vtkUnstructuredGridGPURayCastStatistics::CollectTimes(
+  const vtkPPIRayPassTimes& times, bool timePasses, const vtkPPIRayStageChoice& choice)
+{
+  for (int kind = 0; kind < NUMBER_OF_PASS_KINDS; ++kind)
+  {
+    this->PassTimes[kind] = timePasses ? times.GetMilliseconds(kind) : 0.0;
+    this->PassCounts[kind] = timePasses ? times.GetCount(kind) : 0;
+  }
+  this->ChosenMarchStage = choice.GetChosen();
+  for (int stage = 0; stage < 2; ++stage)
+  {
+    this->MarchStageProbeTimes[stage] = choice.GetProbeMilliseconds(stage);
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkUnstructuredGridGPURayCastStatistics::GetMarchStageProbeTime(int stage)
+{
+  return stage == 0 || stage == 1 ? this->MarchStageProbeTimes[stage] : -1.0;
+}
 
 //------------------------------------------------------------------------------
 double vtkUnstructuredGridGPURayCastStatistics::GetPassTime(int kind)
@@ -76,7 +99,10 @@ void vtkUnstructuredGridGPURayCastStatistics::PrintSelf(ostream& os, vtkIndent i
   os << indent << "GPUMemorySize: " << this->GPUMemorySize << "\n";
   os << indent << "CellArrayBytes: " << this->CellArrayBytes << "\n";
   os << indent << "NumberOfPeels: " << this->NumberOfPeels << "\n";
-  os << indent << "MarchStage: " << this->MarchStage << "\n";
+  os << indent << "MarchStage: " << this->MarchStage
+     << ", ChosenMarchStage: " << this->ChosenMarchStage << " (probe: fragment "
+     << this->MarchStageProbeTimes[0] << " ms, compute " << this->MarchStageProbeTimes[1]
+     << " ms)\n";
   os << indent << "NumberOfContinuations: " << this->NumberOfContinuations << "\n";
   os << indent << "NumberOfCellSteps: " << this->NumberOfCellSteps << "\n";
   os << indent << "PreparationTime: " << this->PreparationTime << "\n";

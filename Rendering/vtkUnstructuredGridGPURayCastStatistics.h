@@ -17,6 +17,9 @@
 #include "ppirayStageTimes.h"      // for ppiray::StageTimes
 #include "vtkObject.h"
 
+class vtkPPIRayPassTimes;
+class vtkPPIRayStageChoice;
+
 class PPIRAYRENDERING_EXPORT vtkUnstructuredGridGPURayCastStatistics : public vtkObject
 {
 public:
@@ -103,6 +106,19 @@ public:
   vtkGetMacro(MarchStage, int);
 
   /**
+   * MARCH_STAGE_AUTOMATIC's choice: the stage kept after its probe (the
+   * first frames of a scene alternate the stages, timed), or -1 while it
+   * probes or the stage is not automatic.
+   */
+  vtkGetMacro(ChosenMarchStage, int);
+
+  /**
+   * The probe's best frame in `stage` (MARCH_STAGE_FRAGMENT or
+   * MARCH_STAGE_COMPUTE), GPU milliseconds over every pass; -1: not timed.
+   */
+  double GetMarchStageProbeTime(int stage);
+
+  /**
    * March passes the last frame added to continue rays that needed more loop
    * iterations than one pass takes (thousands of transfer-function control
    * points crossed along a ray; some drivers end a shader's loops silently
@@ -173,6 +189,10 @@ private:
 
   // The mapper writes them (vtkUnstructuredGridGPURayCastMapper::vtkInternals).
   friend class vtkUnstructuredGridGPURayCastMapper;
+  // The last frame's pass times (where TimePasses asked for them; a probe of
+  // the automatic stage times its frames too) and the automatic stage's choice.
+  void CollectTimes(
+    const vtkPPIRayPassTimes& times, bool timePasses, const vtkPPIRayStageChoice& choice);
 
   vtkIdType NumberOfTetrahedra = 0;
   vtkIdType NumberOfHexahedra = 0;
@@ -190,6 +210,8 @@ private:
   vtkIdType CellArrayBytes = 0;
   int NumberOfPeels = 0;
   int MarchStage = 0;
+  int ChosenMarchStage = -1;
+  double MarchStageProbeTimes[2] = { -1.0, -1.0 };
   int NumberOfContinuations = 0;
   vtkIdType NumberOfCellSteps = 0;
   double PreparationTime = 0.0;

@@ -7,7 +7,7 @@
 // from this one there.
 float pixelFootprint(float t)
 {
-  vec2 ndc = 2.0 * texCoord - 1.0;
+  vec2 ndc = 2.0 * pixelCentre() - 1.0;
   vec3 o, d, o1, d1;
   pixelRay(ndc, o, d);
   pixelRay(ndc + vec2(2.0 / float(textureSize(previousAccumulated, 0).x), 0.0), o1, d1);

@@ -21,7 +21,8 @@ uniform int maximumSteps;
 uniform float terminationAlpha;
 
 // The stage the march runs in (march_fragment_stage_fs.glsl,
-// march_compute_stage_cs.glsl): texCoord, the pixel centre in [0, 1]^2;
+// march_compute_stage_cs.glsl): pixelCentre(), the pixel centre in [0, 1]^2,
+// the same in both stages;
 // marchPixel(), the pixel; the ping-pong targets fragOutput0..2: the
 // accumulated premultiplied colour, this peel's colour composited under the
 // earlier peels'; the ray parameter where this peel's march stopped (for the

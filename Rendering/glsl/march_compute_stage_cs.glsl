@@ -6,7 +6,6 @@
 //PPIRay::MarchQueue::Dec
 layout(local_size_x = MARCH_GROUP_SIZE) in;
 
-vec2 texCoord; // pixel centre in [0, 1]^2, as the quad's interpolation gives it
 vec4 fragOutput0;
 vec4 fragOutput1;
 vec4 fragOutput2;
@@ -15,6 +14,12 @@ ivec2 queuedPixel;
 ivec2 marchPixel()
 {
   return queuedPixel;
+}
+
+// The pixel's centre in [0, 1]^2, computed as the fragment stage computes it.
+vec2 pixelCentre()
+{
+  return (vec2(queuedPixel) + 0.5) / vec2(targetSize);
 }
 
 void marchRay();
@@ -27,7 +32,6 @@ void main()
   }
   uint code = pixels[gl_GlobalInvocationID.x];
   queuedPixel = ivec2(code % 65536u, code / 65536u);
-  texCoord = (vec2(queuedPixel) + 0.5) / vec2(targetSize);
   marchRay();
   imageStore(accumulatedTarget, queuedPixel, fragOutput0);
   imageStore(exitTarget, queuedPixel, fragOutput1);

@@ -117,7 +117,7 @@ void marchRay()
     return;
   }
   // The ray through the pixel centre, in the local frame.
-  vec2 ndc = 2.0 * texCoord - 1.0;
+  vec2 ndc = 2.0 * pixelCentre() - 1.0;
   vec3 origin, direction;
   pixelRay(ndc, origin, direction);
 

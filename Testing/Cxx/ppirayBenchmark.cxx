@@ -243,6 +243,15 @@ Row MeasureOrbit(const std::string& name, vtkRenderWindow* window,
   vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
   vtkCamera* camera = renderer->GetActiveCamera();
   window->Render(); // warm-up: uploads, shader compilation, sorting structures
+  auto* automatic = vtkUnstructuredGridGPURayCastMapper::SafeDownCast(mapper);
+  for (int frame = 0;
+       automatic && automatic->GetStatistics()->GetChosenMarchStage() < 0 &&
+       automatic->GetMarchStage() == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_AUTOMATIC &&
+       frame < 12;
+       ++frame)
+  {
+    window->Render(); // the automatic stage's probe, until it has chosen
+  }
   window->WaitForCompletion();
   static bool reported = false;
   if (!reported)
@@ -435,9 +444,10 @@ std::vector<Row> MeasurePPIRay(
     : name == "ppiray-full"    ? vtkUnstructuredGridGPURayCastMapper::FULL_PRE_INTEGRATION
                                : vtkUnstructuredGridGPURayCastMapper::PARTIAL_PRE_INTEGRATION);
   const std::string stageName =
-    stage == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_COMPUTE    ? " [compute]"
-    : stage == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_FRAGMENT ? " [fragment]"
-                                                                         : "";
+    stage == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_COMPUTE     ? " [compute]"
+    : stage == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_FRAGMENT  ? " [fragment]"
+    : stage == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_AUTOMATIC ? " [automatic]"
+                                                                          : "";
   std::vector<Row> rows = Measure(std::string("PPIRay ") + m->GetIntegrationModeAsString() +
                                     (name == "ppiray-compact"      ? " (compact)"
                                       : name == "ppiray-subdivide" ? " (subdivided)"
@@ -449,6 +459,15 @@ std::vector<Row> MeasurePPIRay(
       m->GetStatistics()->GetMarchStage() != stage)
   {
     std::cout << "(the compute stage was not available: measured in the fragment stage)\n";
+  }
+  if (m->GetMarchStage() == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_AUTOMATIC)
+  {
+    auto* statistics = m->GetStatistics();
+    std::printf("(automatic stage: %s; probe's best frames: fragment %.2f ms, compute %.2f ms)\n",
+      statistics->GetMarchStage() == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_COMPUTE
+        ? "compute"
+        : "fragment",
+      statistics->GetMarchStageProbeTime(0), statistics->GetMarchStageProbeTime(1));
   }
   if (name == "ppiray-full")
   {

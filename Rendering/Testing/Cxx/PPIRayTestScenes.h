@@ -41,8 +41,12 @@ namespace ppiray_test
 // TETRAHEDRON_COMPACT when its arguments hold "--tetrahedron-layout compact"
 // (the ".Compact" variants), MARCH_STAGE_COMPUTE with "--march-stage
 // compute" (the ".Compute" variants; ctest runs both of the tests that read
-// them, PPIRayTesting.cmake), else the defaults; every PPIRay mapper a test
-// shows (Scene::Show) or passes to UseTetrahedronLayout() gets them.
+// them, PPIRayTesting.cmake), else the default layout and the fragment
+// stage; every PPIRay mapper a test shows (Scene::Show) or passes to
+// UseTetrahedronLayout() gets them. Not the automatic stage: its probe
+// alternates the stages over a mapper's first frames, and a test that
+// compares frames compares one stage (TestGPURayCastMarchStageChoice
+// tests the automatic stage).
 inline int& TetrahedronLayout()
 {
   static int layout = vtkUnstructuredGridGPURayCastMapper::TETRAHEDRON_PLANES;
@@ -51,7 +55,7 @@ inline int& TetrahedronLayout()
 
 inline int& MarchStage()
 {
-  static int stage = vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_AUTOMATIC;
+  static int stage = vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_FRAGMENT;
   return stage;
 }
 

@@ -1,0 +1,110 @@
+#include "vtkPPIRayStageChoice.h"
+
+#include "ppirayMapperModes.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+// The stage of each probe frame; a stage's first frame warms it up.
+int ProbeStage(int frame)
+{
+  return frame % 2 == 0 ? ppiray::MarchFragment : ppiray::MarchCompute;
+}
+
+bool WarmUp(int frame)
+{
+  return frame < 2;
+}
+}
+
+//------------------------------------------------------------------------------
+int vtkPPIRayStageChoice::Next(size_t program, bool computeAvailable)
+{
+  if (this->Seen && program != this->Program)
+  {
+    this->Restart();
+  }
+  this->Program = program;
+  this->ComputeAvailable = computeAvailable;
+  if (!computeAvailable)
+  {
+    this->Chosen = ppiray::MarchFragment;
+  }
+  return this->Chosen >= 0 ? this->Chosen : ProbeStage(this->Frame);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayStageChoice::Observe(int stage, double milliseconds, size_t scene, double rayShare)
+{
+  if (!this->ComputeAvailable)
+  {
+    return; // the fragment stage, whatever the scene
+  }
+  const bool sameScene = !this->Seen || scene == this->Scene;
+  this->Seen = true;
+  this->Scene = scene;
+  if (!sameScene || (this->Chosen >= 0 && OtherShare(rayShare, this->ProbedShare)))
+  {
+    this->Restart();
+    return;
+  }
+  if (this->Chosen >= 0)
+  {
+    return;
+  }
+  if (stage != ProbeStage(this->Frame))
+  {
+    return; // a frame still in the stage chosen before the scene changed
+  }
+  if (!WarmUp(this->Frame) && milliseconds >= 0.0)
+  {
+    double& best = this->Best[stage];
+    best = best < 0.0 ? milliseconds : std::min(best, milliseconds);
+  }
+  this->ShareSum += rayShare;
+  if (++this->Frame == ProbeFrames)
+  {
+    this->Chosen = Faster(this->Best[ppiray::MarchFragment], this->Best[ppiray::MarchCompute]);
+    this->ProbedShare = this->ShareSum / ProbeFrames;
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkPPIRayStageChoice::GetProbeMilliseconds(int stage) const
+{
+  return stage == ppiray::MarchFragment || stage == ppiray::MarchCompute ? this->Best[stage]
+                                                                         : -1.0;
+}
+
+//------------------------------------------------------------------------------
+int vtkPPIRayStageChoice::Faster(double fragmentMilliseconds, double computeMilliseconds)
+{
+  const bool both = fragmentMilliseconds >= 0.0 && computeMilliseconds >= 0.0;
+  return both && computeMilliseconds < fragmentMilliseconds ? ppiray::MarchCompute
+                                                            : ppiray::MarchFragment;
+}
+
+//------------------------------------------------------------------------------
+size_t vtkPPIRayStageChoice::SceneKey(long long tetrahedra, long long nativeCells)
+{
+  return static_cast<size_t>(tetrahedra) * 65599u + static_cast<size_t>(nativeCells);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPPIRayStageChoice::OtherShare(double rayShare, double probedShare)
+{
+  // Shares below 1/64 count as 1/64: a few pixels more or less is the same scene.
+  const double floor = 1.0 / 64.0;
+  return std::abs(std::log2(std::max(rayShare, floor) / std::max(probedShare, floor))) > 1.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayStageChoice::Restart()
+{
+  this->Chosen = -1;
+  this->Frame = 0;
+  this->Best = { { -1.0, -1.0 } };
+  this->ShareSum = 0.0;
+}
