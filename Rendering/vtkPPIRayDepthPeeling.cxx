@@ -18,6 +18,7 @@
 #include PPIRAY_VTK_OPENGL_HEADER
 
 #include <algorithm>
+#include <chrono>
 #include <string>
 
 #include "composite_fs.h"
@@ -272,6 +273,12 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
   bool& cut, vtkObject* reporter)
 {
   cut = false;
+  this->FrameMilliseconds = -1.0;
+  if (frame.TimeFrame)
+  {
+    glFinish(); // what was drawn before is not this frame's
+  }
+  const auto start = std::chrono::steady_clock::now();
   this->Times.StartFrame(frame.TimePasses);
   if (!this->Prepare(context, frame.TargetWidth, frame.TargetHeight, cells, reporter))
   {
@@ -306,7 +313,8 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
   int peel = 0;
   this->Continuations = 0;
   this->CellSteps = 0;
-  this->RaysMarched = this->PixelsMarched = 0;
+  this->RaysMarched = 0;
+  this->TargetPixels = static_cast<long long>(frame.TargetWidth) * frame.TargetHeight;
   bool finished = true;
   if (frame.Section && !frame.Section->empty() && this->EnterAtNearPlane(context, frame, reporter))
   {
@@ -341,6 +349,12 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
   this->Times.Start(vtkPPIRayPassTimes::Composite);
   this->Composite(context, frame);
   this->Times.EndFrame();
+  if (frame.TimeFrame)
+  {
+    glFinish();
+    this->FrameMilliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
   return peel;
 }
 
@@ -528,9 +542,7 @@ void vtkPPIRayDepthPeeling::March(vtkOpenGLRenderWindow* context, const Frame& f
     this->Exit[this->Current], this->Continuation[this->Current] };
   march.Run(context, fbo, frame.TargetWidth, frame.TargetHeight, inputs, targets, this->RaysAtMost);
   this->Times.Stop();
-  const long long pixels = static_cast<long long>(frame.TargetWidth) * frame.TargetHeight;
-  this->RaysMarched += std::min(this->RaysAtMost, pixels);
-  this->PixelsMarched += pixels;
+  this->RaysMarched += std::min(this->RaysAtMost, this->TargetPixels);
   for (auto* texture : textures)
   {
     texture->Deactivate();

@@ -65,6 +65,9 @@ public:
     bool CountCellSteps = false;
     // Time every pass with GL timer queries (waits for the GPU at the end).
     bool TimePasses = false;
+    // Time the frame's passes on the clock, waiting for the GPU before and
+    // after them (the automatic march stage's probe).
+    bool TimeFrame = false;
     // The boundary bounds a convex solid: one entry layer, no peel after it.
     bool ConvexBoundary = false;
   };
@@ -92,13 +95,15 @@ public:
   long long GetNumberOfCellSteps() const { return this->CellSteps; }
 
   /**
-   * The share of the target's pixels the last frame's march passes marched
-   * (at most: each pass's entry or continuation query), 0 to 1.
+   * Rays the last frame's march passes marched (at most: each pass's entry
+   * or continuation query) per pixel of the target, over all passes.
    */
-  double GetRayShare() const
+  double GetRaysPerPixel() const
   {
-    return this->PixelsMarched > 0 ? double(this->RaysMarched) / double(this->PixelsMarched) : 0.0;
+    return this->TargetPixels > 0 ? double(this->RaysMarched) / double(this->TargetPixels) : 0.0;
   }
+  /** Milliseconds the last frame's passes took (Frame::TimeFrame; else -1). */
+  double GetFrameMilliseconds() const { return this->FrameMilliseconds; }
   /** The last frame's GPU time per kind of pass (Frame::TimePasses; else 0). */
   const vtkPPIRayPassTimes& GetPassTimes() const { return this->Times; }
 
@@ -167,7 +172,9 @@ private:
   // continuation pass's query; the target's pixels where not counted).
   long long RaysAtMost = 0;
   long long CellSteps = 0;
-  long long RaysMarched = 0, PixelsMarched = 0; // over the frame's march passes
+  long long RaysMarched = 0;  // over the frame's march passes
+  long long TargetPixels = 0; // of the frame's targets
+  double FrameMilliseconds = -1.0;
   vtkPPIRayPassTimes Times;
 
   vtkShaderProgram* SectionProgram = nullptr; // owned by the shader cache

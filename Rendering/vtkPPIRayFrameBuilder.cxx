@@ -147,6 +147,7 @@ bool vtkPPIRayFrameBuilder::Build(vtkRenderer* ren, vtkVolume* vol, vtkPPIRayCel
   frame.ClippingPlanes = &this->ClippingPlanes;
   frame.CountCellSteps = settings.CountCellSteps;
   frame.TimePasses = settings.TimePasses;
+  frame.TimeFrame = settings.TimeFrame;
   frame.ConvexBoundary = cells.IsBoundaryConvex();
   this->MaximumSteps = settings.MaximumSteps > 0 ? settings.MaximumSteps
                                                  : DefaultMaximumSteps(cells.GetNumberOfCells());

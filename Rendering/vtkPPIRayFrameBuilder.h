@@ -38,6 +38,7 @@ public:
     int MaximumSteps = 0; // 0: chosen from the number of cells
     bool CountCellSteps = false;
     bool TimePasses = false;
+    bool TimeFrame = false; // the automatic stage's probe (Frame::TimeFrame)
     double ImageSampleDistance = 1.0;
     vtkPlaneCollection* ClippingPlanes = nullptr;
   };

@@ -5,7 +5,6 @@
 #include "ppirayVTKCompatibility.h"
 #include "vtkObject.h"
 #include "vtkOpenGLQuadHelper.h"
-#include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkPPIRayComputeProgram.h"
@@ -71,10 +70,8 @@ bool vtkPPIRayMarchShader::Ready(vtkOpenGLRenderWindow* context, const std::stri
     const std::hash<std::string> hash;
     const size_t program = hash(traversal) ^ (hash(integration) * 31) ^ (hash(isoSurfaces) * 37) ^
                            static_cast<size_t>(blend);
-    // Without timer queries nothing can be measured: the fragment stage.
-    stage = this->Choice.Next(program, !this->ComputeRefused &&
-                                         vtkPPIRayComputeProgram::IsSupported(context) &&
-                                         vtkOpenGLRenderTimer::IsSupported());
+    stage = this->Choice.Next(
+      program, !this->ComputeRefused && vtkPPIRayComputeProgram::IsSupported(context));
   }
   if (stage == ppiray::MarchCompute && !this->ComputeRefused &&
       this->ReadyCompute(
@@ -100,7 +97,7 @@ void vtkPPIRayMarchShader::ObserveFrame(const vtkPPIRayDepthPeeling& peeling, si
   if (this->Requested == ppiray::MarchAutomatic)
   {
     this->Choice.Observe(
-      this->Built, peeling.GetPassTimes().GetFrameMilliseconds(), scene, peeling.GetRayShare());
+      this->Built, peeling.GetFrameMilliseconds(), scene, peeling.GetRaysPerPixel());
   }
 }
 

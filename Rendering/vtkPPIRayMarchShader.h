@@ -65,7 +65,7 @@ public:
 
   /**
    * What the frame `peeling` drew with the program last readied cost: its
-   * passes' GPU time and share of pixels marched, for `scene`
+   * passes' GPU time and rays marched per pixel, for `scene`
    * (vtkPPIRayStageChoice::SceneKey; the automatic stage's measurement,
    * vtkPPIRayStageChoice::Observe).
    */

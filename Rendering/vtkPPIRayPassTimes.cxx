@@ -14,7 +14,6 @@ vtkPPIRayPassTimes::~vtkPPIRayPassTimes() = default;
 void vtkPPIRayPassTimes::StartFrame(bool enabled)
 {
   this->Enabled = enabled && vtkOpenGLRenderTimer::IsSupported();
-  this->Complete = false;
   this->Running = -1;
   this->Used = 0;
   this->Kinds.clear();
@@ -73,7 +72,6 @@ bool vtkPPIRayPassTimes::EndFrame()
     this->Milliseconds[this->Kinds[i]] += timer->GetElapsedMilliseconds();
     ++this->Counts[this->Kinds[i]];
   }
-  this->Complete = complete;
   return complete;
 }
 
@@ -81,17 +79,6 @@ bool vtkPPIRayPassTimes::EndFrame()
 double vtkPPIRayPassTimes::GetMilliseconds(int pass) const
 {
   return pass >= 0 && pass < NumberOfPasses ? this->Milliseconds[pass] : 0.0;
-}
-
-//------------------------------------------------------------------------------
-double vtkPPIRayPassTimes::GetFrameMilliseconds() const
-{
-  double sum = 0.0;
-  for (double milliseconds : this->Milliseconds)
-  {
-    sum += milliseconds;
-  }
-  return this->Complete ? sum : -1.0;
 }
 
 //------------------------------------------------------------------------------

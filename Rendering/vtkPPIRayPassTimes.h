@@ -54,9 +54,6 @@ public:
   /** Milliseconds of GPU time the last frame spent in passes of `pass`. */
   double GetMilliseconds(int pass) const;
 
-  /** Milliseconds of GPU time over all the last frame's passes; -1 if not all were timed. */
-  double GetFrameMilliseconds() const;
-
   /** How many passes of that kind the last frame drew. */
   int GetCount(int pass) const;
 
@@ -70,8 +67,7 @@ private:
   void operator=(const vtkPPIRayPassTimes&) = delete;
 
   bool Enabled = false;
-  bool Complete = false; // the last frame timed, every result read
-  int Running = -1;      // the timer of the pass being timed, or -1
+  int Running = -1; // the timer of the pass being timed, or -1
   std::vector<std::unique_ptr<vtkOpenGLRenderTimer>> Timers; // reused frame to frame
   std::vector<Pass> Kinds;                                   // of Timers[0, Used)
   size_t Used = 0;

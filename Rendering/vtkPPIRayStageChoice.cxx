@@ -36,7 +36,8 @@ int vtkPPIRayStageChoice::Next(size_t program, bool computeAvailable)
 }
 
 //------------------------------------------------------------------------------
-void vtkPPIRayStageChoice::Observe(int stage, double milliseconds, size_t scene, double rayShare)
+void vtkPPIRayStageChoice::Observe(
+  int stage, double milliseconds, size_t scene, double raysPerPixel)
 {
   if (!this->ComputeAvailable)
   {
@@ -45,7 +46,8 @@ void vtkPPIRayStageChoice::Observe(int stage, double milliseconds, size_t scene,
   const bool sameScene = !this->Seen || scene == this->Scene;
   this->Seen = true;
   this->Scene = scene;
-  if (!sameScene || (this->Chosen >= 0 && OtherShare(rayShare, this->ProbedShare)))
+  if (!sameScene ||
+      (this->Chosen >= 0 && OtherRaysPerPixel(raysPerPixel, this->ProbedRaysPerPixel)))
   {
     this->Restart();
     return;
@@ -63,19 +65,18 @@ void vtkPPIRayStageChoice::Observe(int stage, double milliseconds, size_t scene,
     double& best = this->Best[stage];
     best = best < 0.0 ? milliseconds : std::min(best, milliseconds);
   }
-  this->ShareSum += rayShare;
+  this->RaysPerPixelSum += raysPerPixel;
   if (++this->Frame == ProbeFrames)
   {
     this->Chosen = Faster(this->Best[ppiray::MarchFragment], this->Best[ppiray::MarchCompute]);
-    this->ProbedShare = this->ShareSum / ProbeFrames;
+    this->ProbedRaysPerPixel = this->RaysPerPixelSum / ProbeFrames;
   }
 }
 
 //------------------------------------------------------------------------------
 double vtkPPIRayStageChoice::GetProbeMilliseconds(int stage) const
 {
-  return stage == ppiray::MarchFragment || stage == ppiray::MarchCompute ? this->Best[stage]
-                                                                         : -1.0;
+  return stage == ppiray::MarchFragment || stage == ppiray::MarchCompute ? this->Best[stage] : -1.0;
 }
 
 //------------------------------------------------------------------------------
@@ -93,11 +94,11 @@ size_t vtkPPIRayStageChoice::SceneKey(long long tetrahedra, long long nativeCell
 }
 
 //------------------------------------------------------------------------------
-bool vtkPPIRayStageChoice::OtherShare(double rayShare, double probedShare)
+bool vtkPPIRayStageChoice::OtherRaysPerPixel(double raysPerPixel, double probed)
 {
-  // Shares below 1/64 count as 1/64: a few pixels more or less is the same scene.
+  // Below 1/64 counts as 1/64: a few rays more or less is the same scene.
   const double floor = 1.0 / 64.0;
-  return std::abs(std::log2(std::max(rayShare, floor) / std::max(probedShare, floor))) > 1.0;
+  return std::abs(std::log2(std::max(raysPerPixel, floor) / std::max(probed, floor))) > 1.0;
 }
 
 //------------------------------------------------------------------------------
@@ -106,5 +107,5 @@ void vtkPPIRayStageChoice::Restart()
   this->Chosen = -1;
   this->Frame = 0;
   this->Best = { { -1.0, -1.0 } };
-  this->ShareSum = 0.0;
+  this->RaysPerPixelSum = 0.0;
 }

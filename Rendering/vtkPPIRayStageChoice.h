@@ -6,15 +6,16 @@
  * path is a sliver of the chip) and on the scene (the compute stage's ray
  * queue pays where few pixels have a ray; results.md, "March stages"), so
  * the choice is measured where the mapper runs: the first frames of a scene
- * alternate the stages (fragment, compute, three times each, every pass
- * timed with GL timer queries), the first frame of each only warms it up
- * (its program built), and the stage whose best frame took less GPU time
- * is kept. The same scene means the same march program, the same number of
- * cells, and a share of pixels marched within a factor of two of the
- * probe's; anything else probes again. Not the target size or the points: a
+ * alternate the stages (fragment, compute, three times each, the frame's
+ * passes timed on the clock between two waits for the GPU), the first frame
+ * of each only warms it up (its program built), and the stage whose best
+ * frame took less time is kept. The same scene means the same march program, the same number of
+ * cells, and rays marched per pixel (over a frame's passes) within a factor
+ * of two of the probe's: a camera moving closer or away; anything else
+ * probes again. Not the target size or the points: a
  * level of detail that changes the one, or a deforming mesh the other, from
  * frame to frame would probe for ever. Where the context has no compute
- * shaders, or no timer queries, the fragment stage without a probe. No
+ * shaders, the fragment stage without a probe. No
  * OpenGL here: the mapper's march shader asks and reports.
  * Internal to PPIRay::Rendering.
  */
@@ -43,12 +44,12 @@ public:
 
   /**
    * What a frame cost: the stage it ran in (ppiray::MarchStage),
-   * `milliseconds` of GPU time over its passes (< 0: not timed), `scene` a
-   * key of the mesh (SceneKey), `rayShare` the share of the target's pixels
-   * its march passes marched (0 to 1). A frame whose scene differs from the
+   * `milliseconds` its passes took (< 0: not timed), `scene` a
+   * key of the mesh (SceneKey), `raysPerPixel` the rays its march passes
+   * marched per pixel of the target. A frame whose scene differs from the
    * last one's probes again from the next frame.
    */
-  void Observe(int stage, double milliseconds, size_t scene, double rayShare);
+  void Observe(int stage, double milliseconds, size_t scene, double raysPerPixel);
 
   /** The stage chosen, or -1 while probing. */
   int GetChosen() const { return this->Chosen; }
@@ -59,11 +60,12 @@ public:
   /** A scene key: the mesh's numbers of tetrahedra and of cells marched natively. */
   static size_t SceneKey(long long tetrahedra, long long nativeCells);
 
-  /** The stage kept after a probe: the faster, the fragment stage on a tie or without both times. */
+  /** The stage kept after a probe: the faster, the fragment stage on a tie or without both times.
+   */
   static int Faster(double fragmentMilliseconds, double computeMilliseconds);
 
-  /** Whether a share of pixels marched differs from the probe's by more than a factor of two. */
-  static bool OtherShare(double rayShare, double probedShare);
+  /** Whether rays per pixel differ from the probe's by more than a factor of two. */
+  static bool OtherRaysPerPixel(double raysPerPixel, double probed);
 
 private:
   void Restart();
@@ -71,8 +73,8 @@ private:
   int Chosen = -1; // ppiray::MarchStage, or -1 while probing
   int Frame = 0;   // of the probe
   std::array<double, 2> Best{ { -1.0, -1.0 } };
-  double ShareSum = 0.0; // over the probe's frames
-  double ProbedShare = 0.0;
+  double RaysPerPixelSum = 0.0; // over the probe's frames
+  double ProbedRaysPerPixel = 0.0;
   size_t Program = 0;
   size_t Scene = 0;
   bool Seen = false; // Program and Scene hold a frame's keys

@@ -216,7 +216,7 @@ void vtkUnstructuredGridGPURayCastMapper::CollectStatistics()
     in.Peeling.GetGPUBytes() + in.MarchShader.GetGPUBytes());
   out.CellArrayBytes =
     static_cast<vtkIdType>(in.Mesh.GetBuffers() ? in.Mesh.GetBuffers()->GetCellArrayBytes() : 0);
-  out.CollectTimes(in.Peeling.GetPassTimes(), this->TimePasses != 0, in.MarchShader.GetChoice());
+  out.CollectTimes(in.Peeling.GetPassTimes(), in.MarchShader.GetChoice());
   out.Modified();
 }
 
@@ -414,7 +414,8 @@ void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolum
   settings.MaximumPeels = this->MaximumNumberOfPeels;
   settings.MaximumSteps = this->MaximumNumberOfSteps;
   settings.CountCellSteps = this->CountCellSteps != 0;
-  settings.TimePasses = this->TimePasses != 0 || in.MarchShader.Probing(this->MarchStage);
+  settings.TimePasses = this->TimePasses != 0;
+  settings.TimeFrame = in.MarchShader.Probing(this->MarchStage);
   settings.ImageSampleDistance = this->ImageSampleDistance;
   settings.ClippingPlanes = this->ClippingPlanes;
   if (!in.MarchShader.Ready(context,

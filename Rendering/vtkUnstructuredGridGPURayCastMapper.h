@@ -186,11 +186,11 @@ public:
    *   not build, one warning and the fragment stage;
    * - MARCH_STAGE_AUTOMATIC (default): the stage measured faster where the
    *   mapper runs, for the scene on screen: the first six frames of a scene
-   *   alternate the stages, every pass timed (GL timer queries), and the
-   *   stage of the faster best frame is kept; a new march program, target
-   *   size or mesh geometry, or a share of pixels marched that changes by
-   *   more than a factor of two, measures again. The fragment stage, without
-   *   a probe, where the context has no compute shaders or timer queries.
+   *   alternate the stages, each frame's passes timed between two waits for
+   *   the GPU, and the stage of the faster best frame is kept; a new march
+   *   program, a mesh with other numbers of cells, or rays marched per pixel
+   *   that change by more than a factor of two, measure again. The fragment
+   *   stage, without a probe, where the context has no compute shaders.
    *   GetStatistics()->GetChosenMarchStage() and GetMarchStageProbeTime()
    *   report the choice.
    * GetStatistics()->GetMarchStage() says which ran. Both stages cast the

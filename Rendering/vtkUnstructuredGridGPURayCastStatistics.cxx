@@ -21,12 +21,12 @@ static_assert(
 
 //------------------------------------------------------------------------------
 void vtkUnstructuredGridGPURayCastStatistics::CollectTimes(
-  const vtkPPIRayPassTimes& times, bool timePasses, const vtkPPIRayStageChoice& choice)
+  const vtkPPIRayPassTimes& times, const vtkPPIRayStageChoice& choice)
 {
   for (int kind = 0; kind < NUMBER_OF_PASS_KINDS; ++kind)
   {
-    this->PassTimes[kind] = timePasses ? times.GetMilliseconds(kind) : 0.0;
-    this->PassCounts[kind] = timePasses ? times.GetCount(kind) : 0;
+    this->PassTimes[kind] = times.GetMilliseconds(kind);
+    this->PassCounts[kind] = times.GetCount(kind);
   }
   this->ChosenMarchStage = choice.GetChosen();
   for (int stage = 0; stage < 2; ++stage)

@@ -114,7 +114,8 @@ public:
 
   /**
    * The probe's best frame in `stage` (MARCH_STAGE_FRAGMENT or
-   * MARCH_STAGE_COMPUTE), GPU milliseconds over every pass; -1: not timed.
+   * MARCH_STAGE_COMPUTE): milliseconds from before the frame's first pass
+   * to after its last, the GPU waited for; -1: not timed.
    */
   double GetMarchStageProbeTime(int stage);
 
@@ -189,10 +190,8 @@ private:
 
   // The mapper writes them (vtkUnstructuredGridGPURayCastMapper::vtkInternals).
   friend class vtkUnstructuredGridGPURayCastMapper;
-  // The last frame's pass times (where TimePasses asked for them; a probe of
-  // the automatic stage times its frames too) and the automatic stage's choice.
-  void CollectTimes(
-    const vtkPPIRayPassTimes& times, bool timePasses, const vtkPPIRayStageChoice& choice);
+  // The last frame's pass times and the automatic stage's choice.
+  void CollectTimes(const vtkPPIRayPassTimes& times, const vtkPPIRayStageChoice& choice);
 
   vtkIdType NumberOfTetrahedra = 0;
   vtkIdType NumberOfHexahedra = 0;

@@ -8,7 +8,7 @@
 //
 //   ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]
 //                   [--views N] [--peer-views N] [--inside] [--check N]
-//                   [--march-stage fragment,compute]
+//                   [--march-stage fragment,compute,automatic]
 //                   [--transfer-function ramp|realistic|cutoff|detailed] [--breakdown]
 //                   [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,ppiray-compact,
 //                              ppiray-subdivide,ppiray-fast,pt,raycast,zsweep]
@@ -277,6 +277,15 @@ Row MeasureOrbit(const std::string& name, vtkRenderWindow* window,
     times.push_back(FrameMilliseconds(window));
   }
   std::sort(times.begin(), times.end());
+  if (automatic &&
+      automatic->GetMarchStage() == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_AUTOMATIC)
+  {
+    auto* statistics = automatic->GetStatistics();
+    std::printf("(automatic stage: chose %d, ran %d in the last view; the probe's best frames: "
+                "fragment %.2f ms, compute %.2f ms)\n",
+      statistics->GetChosenMarchStage(), statistics->GetMarchStage(),
+      statistics->GetMarchStageProbeTime(0), statistics->GetMarchStageProbeTime(1));
+  }
   Row row;
   row.Name = name;
   row.Ms = times[times.size() / 2];
@@ -460,15 +469,7 @@ std::vector<Row> MeasurePPIRay(
   {
     std::cout << "(the compute stage was not available: measured in the fragment stage)\n";
   }
-  if (m->GetMarchStage() == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_AUTOMATIC)
-  {
-    auto* statistics = m->GetStatistics();
-    std::printf("(automatic stage: %s; probe's best frames: fragment %.2f ms, compute %.2f ms)\n",
-      statistics->GetMarchStage() == vtkUnstructuredGridGPURayCastMapper::MARCH_STAGE_COMPUTE
-        ? "compute"
-        : "fragment",
-      statistics->GetMarchStageProbeTime(0), statistics->GetMarchStageProbeTime(1));
-  }
+
   if (name == "ppiray-full")
   {
     std::printf("FULL_PRE_INTEGRATION table %d^3 built in %.3f s\n",
@@ -555,7 +556,7 @@ int main(int argc, char* argv[])
         << "usage: ppirayBenchmark [--file MESH.vtu] [--wavelet HALF_EXTENT] [--size WxH[,WxH..]]"
            " [--views N] [--peer-views N] [--inside] [--check N]"
            " [--transfer-function ramp|realistic|cutoff|detailed] [--breakdown]"
-           " [--march-stage fragment,compute]"
+           " [--march-stage fragment,compute,automatic]"
            " [--mappers ppiray,ppiray-exact,ppiray-full,ppiray-average,ppiray-compact,"
            "ppiray-subdivide,ppiray-fast,pt,raycast,zsweep]\n\n"
            "Frame time of PPIRay against VTK's unstructured volume mappers on one scene, same\n"

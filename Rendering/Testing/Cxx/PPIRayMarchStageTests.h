@@ -30,7 +30,8 @@ inline vtkSmartPointer<vtkUnstructuredGrid> CavityTetrahedra(int n)
   const int a = n / 3, b = 2 * n / 3;
   return VoxelTetrahedra(
     dims, 1.0 / n, origin,
-    [a, b](int i, int j, int k) { return !(i >= a && i < b && j >= a && j < b && k >= a && k < b); },
+    [a, b](int i, int j, int k)
+    { return !(i >= a && i < b && j >= a && j < b && k >= a && k < b); },
     [](double x, double y, double z) { return x + y * y + z; });
 }
 

@@ -2,16 +2,16 @@
 // (vtkPPIRayStageChoice): the first six frames of a scene alternate the
 // fragment and compute stages, timed; the faster is kept (the smaller of the
 // probe's best times it reports). Another window size keeps the choice; a
-// mesh with another number of cells, or a share of pixels marched that
-// changes by more than a factor of two, probes again. Every frame must agree
+// mesh with another number of cells, or rays marched per pixel that change
+// by more than a factor of two, probe again. Every frame must agree
 // with the fragment stage's image within 1/255 and cover the same pixels,
 // and nothing may be printed.
 // With --expect-fallback (ctest runs it under MESA_GL_VERSION_OVERRIDE=3.3,
 // a context without compute shaders): the fragment stage chosen at the first
 // frame, without a probe and without a warning.
 
-#include "PPIRayMarchStageTests.h"
 #include "PPIRayImageCompare.h"
+#include "PPIRayMarchStageTests.h"
 #include "PPIRayTestScenes.h"
 #include "vtkCamera.h"
 #include "vtkUnstructuredGridGPURayCastMapper.h"
@@ -49,7 +49,8 @@ Frame RenderFrame(
     covered += image[i] > 0 ? 1 : 0;
   }
   auto* statistics = mapper->GetStatistics();
-  const bool same = image.size() == reference.size() && largest <= 1 && differ == 0 && covered > 300;
+  const bool same =
+    image.size() == reference.size() && largest <= 1 && differ == 0 && covered > 300;
   std::cout << "  ran " << statistics->GetMarchStage() << ", chosen "
             << statistics->GetChosenMarchStage() << ", max " << largest << "/255, " << covered
             << " channels covered, " << differ << " in one image only\n";
@@ -87,12 +88,12 @@ int Probe(const char* name, ppiray_test::Scene& scene, Mapper* mapper, int previ
   const int faster = compute > 0.0 && compute < fragment ? C : F;
   const int lead = static_cast<int>(frames.size()) - 6;
   bool ok = (lead == 0 || (lead == 1 && previous >= 0 && frames[0].Ran == previous)) &&
-    fragment > 0.0 && compute > 0.0 && frames.back().Chosen == faster;
+            fragment > 0.0 && compute > 0.0 && frames.back().Chosen == faster;
   const int expected[6] = { F, C, F, C, F, C };
   for (int probe = 0; ok && probe < 6; ++probe)
   {
     ok = frames[lead + probe].Ran == expected[probe] &&
-      (probe == 5 || frames[lead + probe].Chosen == -1);
+         (probe == 5 || frames[lead + probe].Chosen == -1);
   }
   for (int frame = 0; frame < after; ++frame)
   {
@@ -156,8 +157,8 @@ int RenderAll(bool fallback)
   }
   scene.Show(mapper, ppiray_test::CavityTetrahedra(8), { 2.2, 1.6, 2.5 }, { 0.5, 0.5, 0.5 });
   errors += Probe("another mesh", scene, mapper, chosen, 1);
-  // Farther away, the mesh covers a few pixels: its share of the pixels
-  // marched is a fraction of the probe's, which probes again.
+  // Farther away, the mesh covers a few pixels: its rays per pixel are a
+  // fraction of the probe's, which probes again.
   scene.Renderer->GetActiveCamera()->Zoom(0.4);
   errors += Probe(
     "a fraction of the pixels", scene, mapper, mapper->GetStatistics()->GetChosenMarchStage(), 1);
