@@ -274,16 +274,17 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
 {
   cut = false;
   this->FrameMilliseconds = -1.0;
-  if (frame.TimeFrame)
-  {
-    glFinish(); // what was drawn before is not this frame's
-  }
-  const auto start = std::chrono::steady_clock::now();
+  this->RaysMarched = this->TargetPixels = 0; // no frame drawn yet
   this->Times.StartFrame(frame.TimePasses);
   if (!this->Prepare(context, frame.TargetWidth, frame.TargetHeight, cells, reporter))
   {
     return -1;
   }
+  if (frame.TimeFrame)
+  {
+    glFinish(); // what was drawn before (and the targets' allocation) is not this frame's
+  }
+  const auto start = std::chrono::steady_clock::now();
   this->Times.Start(vtkPPIRayPassTimes::Setup);
   vtkOpenGLState* state = context->GetState();
   vtkPPIRayPeelingStateRAII saved(state);
@@ -313,7 +314,6 @@ int vtkPPIRayDepthPeeling::Render(vtkOpenGLRenderWindow* context, const Frame& f
   int peel = 0;
   this->Continuations = 0;
   this->CellSteps = 0;
-  this->RaysMarched = 0;
   this->TargetPixels = static_cast<long long>(frame.TargetWidth) * frame.TargetHeight;
   bool finished = true;
   if (frame.Section && !frame.Section->empty() && this->EnterAtNearPlane(context, frame, reporter))

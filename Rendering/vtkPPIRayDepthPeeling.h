@@ -94,6 +94,8 @@ public:
    */
   long long GetNumberOfCellSteps() const { return this->CellSteps; }
 
+  /** The last frame's target size in pixels (0: no frame drawn). */
+  long long GetTargetPixels() const { return this->TargetPixels; }
   /**
    * Rays the last frame's march passes marched (at most: each pass's entry
    * or continuation query) per pixel of the target, over all passes.

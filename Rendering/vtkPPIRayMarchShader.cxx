@@ -92,12 +92,14 @@ bool vtkPPIRayMarchShader::Probing(int stage) const
 }
 
 //------------------------------------------------------------------------------
-void vtkPPIRayMarchShader::ObserveFrame(const vtkPPIRayDepthPeeling& peeling, size_t scene)
+void vtkPPIRayMarchShader::ObserveFrame(
+  const vtkPPIRayDepthPeeling& peeling, long long tetrahedra, long long nativeCells)
 {
-  if (this->Requested == ppiray::MarchAutomatic)
+  const size_t scene = vtkPPIRayStageChoice::SceneKey(tetrahedra, nativeCells);
+  if (this->Requested == ppiray::MarchAutomatic && peeling.GetTargetPixels() > 0)
   {
-    this->Choice.Observe(
-      this->Built, peeling.GetFrameMilliseconds(), scene, peeling.GetRaysPerPixel());
+    this->Choice.Observe(this->Built, peeling.GetFrameMilliseconds(), scene,
+      peeling.GetRaysPerPixel(), peeling.GetTargetPixels());
   }
 }
 

@@ -64,12 +64,14 @@ public:
   bool Probing(int stage) const;
 
   /**
-   * What the frame `peeling` drew with the program last readied cost: its
-   * passes' GPU time and rays marched per pixel, for `scene`
-   * (vtkPPIRayStageChoice::SceneKey; the automatic stage's measurement,
-   * vtkPPIRayStageChoice::Observe).
+   * What the frame `peeling` drew with the program last readied cost (none
+   * if it drew nothing): its passes' time on the clock, its rays marched
+   * per pixel and target size, for the mesh of `tetrahedra` and
+   * `nativeCells` (vtkPPIRayStageChoice::SceneKey; the automatic stage's
+   * measurement, vtkPPIRayStageChoice::Observe).
    */
-  void ObserveFrame(const vtkPPIRayDepthPeeling& peeling, size_t scene);
+  void ObserveFrame(
+    const vtkPPIRayDepthPeeling& peeling, long long tetrahedra, long long nativeCells);
 
   /** The automatic stage's choice and its probe. */
   const vtkPPIRayStageChoice& GetChoice() const { return this->Choice; }

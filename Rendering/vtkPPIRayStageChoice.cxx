@@ -25,6 +25,8 @@ int vtkPPIRayStageChoice::Next(size_t program, bool computeAvailable)
   if (this->Seen && program != this->Program)
   {
     this->Restart();
+    this->Interruptions = 0;
+    this->GaveUp = false;
   }
   this->Program = program;
   this->ComputeAvailable = computeAvailable;
@@ -37,29 +39,44 @@ int vtkPPIRayStageChoice::Next(size_t program, bool computeAvailable)
 
 //------------------------------------------------------------------------------
 void vtkPPIRayStageChoice::Observe(
-  int stage, double milliseconds, size_t scene, double raysPerPixel)
+  int stage, double milliseconds, size_t scene, double raysPerPixel, long long targetPixels)
 {
-  if (!this->ComputeAvailable)
+  if (!this->ComputeAvailable || this->GaveUp)
   {
-    return; // the fragment stage, whatever the scene
+    return; // the fragment stage, or the stage kept when the scene would not hold still
   }
-  const bool sameScene = !this->Seen || scene == this->Scene;
+  const bool newScene = this->Seen && scene != this->Scene;
   this->Seen = true;
   this->Scene = scene;
-  if (!sameScene ||
-      (this->Chosen >= 0 && OtherRaysPerPixel(raysPerPixel, this->ProbedRaysPerPixel)))
-  {
-    this->Restart();
-    return;
-  }
   if (this->Chosen >= 0)
   {
+    const bool other = OtherRaysPerPixel(raysPerPixel, this->ProbedRaysPerPixel);
+    this->FramesOutside = other ? this->FramesOutside + 1 : 0;
+    if (newScene || this->FramesOutside >= SettleFrames)
+    {
+      this->Interrupt();
+    }
+    return;
+  }
+  if (newScene || (this->Frame > 0 && targetPixels != this->ProbePixels))
+  {
+    this->Interrupt(); // the probe's frames would not be alike
     return;
   }
   if (stage != ProbeStage(this->Frame))
   {
-    return; // a frame still in the stage chosen before the scene changed
+    // The compute stage asked for, the fragment stage ran: the context
+    // could not ready it after all.
+    this->Chosen = ppiray::MarchFragment;
+    return;
   }
+  this->ProbePixels = targetPixels;
+  this->CountProbeFrame(stage, milliseconds, raysPerPixel);
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayStageChoice::CountProbeFrame(int stage, double milliseconds, double raysPerPixel)
+{
   if (!WarmUp(this->Frame) && milliseconds >= 0.0)
   {
     double& best = this->Best[stage];
@@ -70,6 +87,20 @@ void vtkPPIRayStageChoice::Observe(
   {
     this->Chosen = Faster(this->Best[ppiray::MarchFragment], this->Best[ppiray::MarchCompute]);
     this->ProbedRaysPerPixel = this->RaysPerPixelSum / ProbeFrames;
+    this->Interruptions = 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPPIRayStageChoice::Interrupt()
+{
+  const int kept = this->Chosen >= 0 ? this->Chosen : this->LastChosen;
+  this->LastChosen = kept;
+  this->Restart();
+  if (++this->Interruptions >= MaximumInterruptions)
+  {
+    this->Chosen = kept;
+    this->GaveUp = true;
   }
 }
 
@@ -106,6 +137,7 @@ void vtkPPIRayStageChoice::Restart()
 {
   this->Chosen = -1;
   this->Frame = 0;
+  this->FramesOutside = 0;
   this->Best = { { -1.0, -1.0 } };
   this->RaysPerPixelSum = 0.0;
 }

@@ -216,7 +216,8 @@ void vtkUnstructuredGridGPURayCastMapper::CollectStatistics()
     in.Peeling.GetGPUBytes() + in.MarchShader.GetGPUBytes());
   out.CellArrayBytes =
     static_cast<vtkIdType>(in.Mesh.GetBuffers() ? in.Mesh.GetBuffers()->GetCellArrayBytes() : 0);
-  out.CollectTimes(in.Peeling.GetPassTimes(), in.MarchShader.GetChoice());
+  out.CollectTimes(in.Peeling.GetPassTimes(), in.MarchShader.GetChoice(),
+    this->MarchStage == MARCH_STAGE_AUTOMATIC);
   out.Modified();
 }
 
@@ -455,8 +456,7 @@ void vtkUnstructuredGridGPURayCastMapper::RenderFrame(vtkRenderer* ren, vtkVolum
     0, in.Peeling.Render(context, frame, *in.Cells, in.MarchShader, marchInputs, cut, this));
   statistics.MarchStage = in.MarchShader.GetStage();
   in.MarchShader.ObserveFrame(
-    in.Peeling, vtkPPIRayStageChoice::SceneKey(
-                  in.Mesh.GetNumberOfTetrahedra(), in.Mesh.GetNumberOfNativeCells()));
+    in.Peeling, in.Mesh.GetNumberOfTetrahedra(), in.Mesh.GetNumberOfNativeCells());
   statistics.NumberOfContinuations = in.Peeling.GetNumberOfContinuations();
   statistics.NumberOfCellSteps = static_cast<vtkIdType>(in.Peeling.GetNumberOfCellSteps());
   in.GridInput.ObserveFrame(statistics.NumberOfPeels, in.Mesh.GetNumberOfHexahedra() > 0);

@@ -21,17 +21,17 @@ static_assert(
 
 //------------------------------------------------------------------------------
 void vtkUnstructuredGridGPURayCastStatistics::CollectTimes(
-  const vtkPPIRayPassTimes& times, const vtkPPIRayStageChoice& choice)
+  const vtkPPIRayPassTimes& times, const vtkPPIRayStageChoice& choice, bool automatic)
 {
   for (int kind = 0; kind < NUMBER_OF_PASS_KINDS; ++kind)
   {
     this->PassTimes[kind] = times.GetMilliseconds(kind);
     this->PassCounts[kind] = times.GetCount(kind);
   }
-  this->ChosenMarchStage = choice.GetChosen();
+  this->ChosenMarchStage = automatic ? choice.GetChosen() : -1;
   for (int stage = 0; stage < 2; ++stage)
   {
-    this->MarchStageProbeTimes[stage] = choice.GetProbeMilliseconds(stage);
+    this->MarchStageProbeTimes[stage] = automatic ? choice.GetProbeMilliseconds(stage) : -1.0;
   }
 }
 

@@ -190,8 +190,10 @@ private:
 
   // The mapper writes them (vtkUnstructuredGridGPURayCastMapper::vtkInternals).
   friend class vtkUnstructuredGridGPURayCastMapper;
-  // The last frame's pass times and the automatic stage's choice.
-  void CollectTimes(const vtkPPIRayPassTimes& times, const vtkPPIRayStageChoice& choice);
+  // The last frame's pass times, and the automatic stage's choice (none
+  // unless `automatic`).
+  void CollectTimes(
+    const vtkPPIRayPassTimes& times, const vtkPPIRayStageChoice& choice, bool automatic);
 
   vtkIdType NumberOfTetrahedra = 0;
   vtkIdType NumberOfHexahedra = 0;

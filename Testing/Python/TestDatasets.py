@@ -93,17 +93,16 @@ def compare(grid, size):
         ms = 1000.0 * (time.perf_counter() - start)
         if mapper.GetStatistics().GetMarchStage() == stage:
             images["fragment" if stage == mapper.MARCH_STAGE_FRAGMENT else "compute"] = (
-                window_rgb(window), ms)
+                window_rgb(window), ms, mapper.GetStatistics().GetNumberOfPeels())
     cells = mapper.GetStatistics().GetNumberOfTetrahedra() or mapper.GetStatistics().GetNumberOfNativeCells()
     kind = ("tetrahedra" if mapper.GetStatistics().GetNumberOfTetrahedra() else
             "hexahedra" if mapper.GetStatistics().GetNumberOfHexahedra() == cells else "cells natively")
-    peels = mapper.GetStatistics().GetNumberOfPeels()
     camera = renderer.GetActiveCamera()
     window.Finalize()  # one X connection at a time, whatever the number of cases
     rgba, seconds = reference_rgba(grid, prop, camera, size)
     return {stage: dict(cells="%d %s" % (cells, kind), peels=peels, ms=ms, ref_s=seconds,
                         **compare_with_reference(gpu, rgba))
-            for stage, (gpu, ms) in images.items()}
+            for stage, (gpu, ms, peels) in images.items()}
 
 
 def check(name, label, m):
