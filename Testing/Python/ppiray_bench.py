@@ -1,4 +1,5 @@
 """Module/run bench [--scenes LIST] [--size WxH] [--views N] [--out DIR] [--methods LIST]
+                   [--modes LIST] [--stages LIST]
 
 Speed against error. For every scene (ppiray_bench_scenes.py) and method,
 renders N views (after a warm-up frame; each frame ends with
@@ -6,7 +7,11 @@ WaitForCompletion) in a subprocess of its own, so that a crashing peer is
 reported and the run goes on, and measures every image against the exact
 CPU reference (vtkUnstructuredGridReferenceRenderer, double precision) of
 the same view. Writes DIR/results.csv, DIR/results.md, DIR/pareto.png and
-DIR/<scene>.png (images and differences side by side).
+DIR/<scene>.png (images and differences side by side). PPIRay runs in the
+fragment stage unless --stages lists others (fragment, compute, automatic:
+each PPIRay method once per stage; the automatic stage's probe finishes
+before the timed views); --modes keeps the PPIRay methods whose mode
+contains one of its comma-separated names.
 """
 import argparse
 import csv
@@ -21,6 +26,9 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.environ.get("PPIRAY_ROOT", os.path.dirname(os.path.dirname(HERE)))
 DATA_ROOT = os.environ.get("PPIRAY_DATA_ROOT", os.path.join(ROOT, "..", "shared", "data"))
+
+# The march stages of --stages (vtkUnstructuredGridGPURayCastMapper::MarchStages).
+STAGES = {"fragment": 0, "compute": 1, "automatic": 2}
 
 # (method, mode, settings): our modes and table sizes, then VTK's mappers.
 METHODS = [
@@ -83,6 +91,7 @@ def run_worker(args):
         mapper.SetPsiTableSize(settings.get("psi", 512))
         mapper.SetPreIntegrationTableSize(settings.get("table", 64))
         mapper.SetHexahedronMode(settings.get("hex", 2))
+        mapper.SetMarchStage(settings.get("stage", STAGES["fragment"]))
     elif method == "vtkProjectedTetrahedraMapper":
         from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLProjectedTetrahedraMapper
 
@@ -122,6 +131,10 @@ def run_worker(args):
         view(renderer, index, args.views)
         if index == 0:
             window.Render()  # warm-up: uploads, shaders, sorting structures
+            for _ in range(12 if settings.get("stage") == STAGES["automatic"] else 0):
+                if mapper.GetStatistics().GetChosenMarchStage() >= 0:
+                    break
+                window.Render()  # the automatic stage's probe, until it has chosen
             window.WaitForCompletion()
         start = time.perf_counter()
         window.Render()
@@ -136,6 +149,7 @@ def run_worker(args):
                 pixels.reshape(args.height, args.width, 3))
     result = {"ms": times, "cells": grid.GetNumberOfCells(), "gpu_bytes": "", **extra}
     if method == "ppiray":
+        result["stage_ran"] = mapper.GetStatistics().GetMarchStage()
         result["gpu_bytes"] = mapper.GetStatistics().GetGPUMemorySize()
         result["hexahedra"] = mapper.GetStatistics().GetNumberOfHexahedra()
         result["native"] = mapper.GetStatistics().GetNumberOfNativeCells()
@@ -182,6 +196,25 @@ def errors(images, references):
             float(diff.max()), float(np.mean(diff > 2.0)))
 
 
+def with_stages(args):
+    """METHODS with each PPIRay method once per stage of --stages (the mode
+    named with its stage unless fragment), kept by --modes."""
+    stages = args.stages.split(",")
+    unknown = [s for s in stages if s not in STAGES]
+    if unknown:
+        raise SystemExit("--stages: unknown %s (fragment, compute, automatic)" % ",".join(unknown))
+    keep = [m for m in args.modes.split(",") if m]
+    for method, mode, settings in METHODS:
+        if method != "ppiray":
+            yield method, mode, settings
+            continue
+        if keep and not any(k in mode for k in keep):
+            continue
+        for stage in stages:
+            named = mode if stage == "fragment" else "%s [%s]" % (mode, stage)
+            yield method, named, dict(settings, stage=STAGES[stage])
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scenes", default=",".join(NAMES_ORDER))
@@ -190,6 +223,9 @@ def main():
     parser.add_argument("--out", default="bench")
     parser.add_argument("--methods", default="all",
                         help="comma-separated method names or 'all'")
+    parser.add_argument("--modes", default="", help="PPIRay modes to keep (substrings)")
+    parser.add_argument("--stages", default="fragment",
+                        help="march stages of each PPIRay method: fragment, compute, automatic")
     parser.add_argument("--wavelet-extent", type=int, default=16)
     parser.add_argument("--timeout", type=int, default=900, help="seconds per method")
     parser.add_argument("--merge", action="store_true",
@@ -215,7 +251,7 @@ def main():
         import ppiray_bench_scenes
 
         hexahedral = scene_name in ppiray_bench_scenes.HEXAHEDRAL
-        for method, mode, settings in METHODS:
+        for method, mode, settings in with_stages(args):
             if args.methods != "all" and method not in args.methods.split(","):
                 continue
             # Hexahedral scenes: our three hexahedron modes (with the default
@@ -249,6 +285,9 @@ def main():
                                 "rmse_255": "%.3f" % rmse, "p99_255": "%.1f" % p99,
                                 "max_255": "%.0f" % worst, "frac_over_2": "%.4f" % frac})
                     notes = []
+                    if settings.get("stage") == STAGES["automatic"]:
+                        notes.append("automatic stage: ran %s" % (
+                            "compute" if result.get("stage_ran") == STAGES["compute"] else "fragment"))
                     if "table_build_s" in result:
                         notes.append("table built in %.3f s" % result["table_build_s"])
                     if "resample_s" in result:
@@ -294,7 +333,7 @@ NAMES_ORDER = ["wavelet", "graded", "graded-spikes", "graded-opaque", "bluntfin"
 def tag_of(method, mode):
     """Folder name of a method's images."""
     tag = (method + "_" + mode).replace(" ", "_").replace("^", "").replace("=", "")
-    return tag.replace("(", "").replace(")", "").replace("+", "_")
+    return tag.replace("(", "").replace(")", "").replace("+", "_").replace("[", "").replace("]", "")
 
 
 if __name__ == "__main__":
