@@ -13,25 +13,13 @@ import os
 import sys
 
 import numpy as np
-from paraview.simple import CreateView, MergeBlocks, PLOT3DReader, Render, Show
+from paraview.simple import Render
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Plugin",
                                 "Testing", "Python"))
-from ppiray_pvtest import mapper_of, read_rgb, screenshot  # noqa: E402
+from ppiray_pvtest import combustor_view, mapper_of, read_rgb, screenshot  # noqa: E402
 
-root = os.environ.get("PPIRAY_DATA_ROOT", "../shared/data")
-reader = PLOT3DReader(FileName=os.path.join(root, "combustor", "combxyz.bin"),
-                      QFileName=[os.path.join(root, "combustor", "combq.bin")])
-reader.Functions = []
-view = CreateView("RenderView")
-view.ViewSize = [400, 400]
-view.Background = [0, 0, 0]
-view.UseColorPaletteForBackground = 0
-display = Show(MergeBlocks(Input=reader), view)
-display.SetRepresentationType("PPIRay Volume")
-display.ColorArrayName = ["POINTS", "Density"]
-display.RescaleTransferFunctionToDataRange(True, False)
-view.ResetCamera()
+view, display = combustor_view()
 mapper = mapper_of(display)
 print("March Stage property:", display.MarchStage)
 camera = view.GetActiveCamera()

@@ -11,26 +11,11 @@ Run: Module/run pvbatch Documentation/datasets/paraview_combustor.py OUTDIR
 import os
 import sys
 
-from paraview.simple import CreateView, MergeBlocks, PLOT3DReader, Show
-
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Plugin",
                                 "Testing", "Python"))
-from ppiray_pvtest import native_and_split  # noqa: E402
+from ppiray_pvtest import combustor_view, native_and_split  # noqa: E402
 
-root = os.environ.get("PPIRAY_DATA_ROOT", "../shared/data")
-reader = PLOT3DReader(FileName=os.path.join(root, "combustor", "combxyz.bin"),
-                      QFileName=[os.path.join(root, "combustor", "combq.bin")])
-reader.Functions = []
-merged = MergeBlocks(Input=reader)
-view = CreateView("RenderView")
-view.ViewSize = [400, 400]
-view.Background = [0, 0, 0]
-view.UseColorPaletteForBackground = 0
-display = Show(merged, view)
-display.SetRepresentationType("PPIRay Volume")
-display.ColorArrayName = ["POINTS", "Density"]
-display.RescaleTransferFunctionToDataRange(True, False)
-view.ResetCamera()
+view, display = combustor_view()
 focal = list(view.CameraFocalPoint)
 view.CameraPosition = [focal[0] + 20, focal[1] - 25, focal[2] + 30]
 view.ResetCamera()

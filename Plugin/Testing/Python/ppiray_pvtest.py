@@ -116,6 +116,28 @@ def set_camera(view, position, focal_point=(0.0, 0.0, 0.0), view_up=(0.0, 1.0, 0
         view.CameraPosition = [f + (e - f) / zoom for f, e in zip(focal_point, eye)]
 
 
+def combustor_view(size=400):
+    """VTK's combustor as a ParaView user opens it (PLOT3D reader, Merge
+    Blocks) shown as PPIRay Volume coloured by point Density in a size x size
+    view on black, the camera reset: (view, display). The data root is
+    PPIRAY_DATA_ROOT, else ../shared/data."""
+    from paraview.simple import MergeBlocks, PLOT3DReader
+    root = os.environ.get("PPIRAY_DATA_ROOT", "../shared/data")
+    reader = PLOT3DReader(FileName=os.path.join(root, "combustor", "combxyz.bin"),
+                          QFileName=[os.path.join(root, "combustor", "combq.bin")])
+    reader.Functions = []
+    view = CreateView("RenderView")
+    view.ViewSize = [size, size]
+    view.Background = [0, 0, 0]
+    view.UseColorPaletteForBackground = 0
+    display = Show(MergeBlocks(Input=reader), view)
+    display.SetRepresentationType(REPRESENTATION)
+    display.ColorArrayName = ["POINTS", "Density"]
+    display.RescaleTransferFunctionToDataRange(True, False)
+    view.ResetCamera()
+    return view, display
+
+
 def mapper_of(display):
     """The vtkUnstructuredGridGPURayCastMapper behind a PPIRay Volume display
     (its counters are read through the ppiray Python package)."""
