@@ -224,6 +224,11 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadScene(const Options& o)
     {
       grid->GetPointData()->SetActiveScalars(grid->GetPointData()->GetArrayName(0));
     }
+    if (!grid->GetPointData()->GetScalars())
+    {
+      std::cerr << o.File << ": no point scalars to render (or not a mesh the reader can read)\n";
+      return nullptr;
+    }
     return grid;
   }
   vtkNew<vtkRTAnalyticSource> source;
@@ -618,6 +623,10 @@ int main(int argc, char* argv[])
       (sizes.empty() ? "" : ", ") + std::to_string(size.first) + "x" + std::to_string(size.second);
   }
   vtkSmartPointer<vtkUnstructuredGrid> grid = LoadScene(o);
+  if (!grid)
+  {
+    return EXIT_FAILURE;
+  }
   const double tets = static_cast<double>(grid->GetNumberOfCells());
   std::cout << "scene: "
             << (o.File.empty()
