@@ -19,9 +19,10 @@
 // Each quadrilateral (q0, q1, q2, q3) is two triangles split along q0-q2, or
 // q1-q3 when the face's bit is set: the same split as the neighbour's, so the
 // traversal is watertight on non-planar faces. The exit is the nearest
-// triangle the ray actually crosses; if rounding lets the ray slip between
-// the two (an edge), the nearest face plane it heads out of (the convex-cell
-// rule). A folded entry face can be the exit too (exitCandidate). A flat
+// triangle the ray actually crosses (searched for outside the step, where
+// the nearest plane's triangle is not crossed: cellExitSearch); if rounding
+// lets the ray slip between the two (an edge), the nearest face plane it
+// heads out of (the convex-cell rule). A folded entry face can be the exit too (exitCandidate). A flat
 // cell (zero volume, FLAT_KIND_BIT in its kind) is crossed with zero length
 // (flat_cells_fs.glsl).
 
@@ -46,9 +47,10 @@ vec4 cellC;   // c0..c3
 vec4 cellD;   // c4..c7
 vec3 cellE;   // c8..c10 (QUADRATIC_FIELD)
 
-// Loop iterations of a cell step spent here: the two searches over 6 faces x
-// 2 triangles, the corners, the cubic's extrema and monotonic pieces, and a
+// Loop iterations of a cell step spent here: the exit's two searches over 6
+// faces x 2 triangles (the second, cellExitSearch, run for it by the march), the corners, the cubic's extrema and monotonic pieces, and a
 // pyramid's field (four inversions, one more per isosurface crossed).
+const bool EXIT_SEARCHES = true;
 const int CELL_LOOPS = 63 +
   (PYRAMID_CELLS ? (4 + (ISO_MODE == 0 ? 0 : MAXIMUM_ISO_VALUES)) * (PYRAMID_NEWTON_STEPS + 1) : 0);
 
@@ -276,14 +278,65 @@ int oppositeFace(int cell, int kind, int entryFace)
   return code != -1 && !(REENTRY_EDGES && code >= REENTRY_FACE) ? across : -1;
 }
 
+// The exit planes of the loaded cell from t: the nearest face by the
+// nearer of its triangles' planes the ray heads out of (exit candidates),
+// planeFace (-1: none), with that triangle (near, met at tNear) and the
+// face's other (far, tFar; INFINITY where it is no candidate); tNext, the
+// nearest plane of any other face. Walking back: inFace, the face of the
+// farthest plane it heads into other than entryFace's.
+struct ExitPlanes
+{
+  int planeFace, inFace;
+  float tNear, tFar, tNext;
+  Triangle near, far;
+};
+
+ExitPlanes exitPlanes(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, bool backwards)
+{
+  ExitPlanes e;
+  e.planeFace = -1;
+  e.inFace = -1;
+  e.tNear = INFINITY;
+  e.tFar = INFINITY;
+  e.tNext = INFINITY;
+  float tIn = -INFINITY;
+  for (int f = 0; f < 6; ++f)
+  {
+    Triangle tri0, tri1;
+    float along0, along1, tf0, tf1;
+    faceTriangleCrossing(cell, f, 0, origin, direction, tri0, along0, tf0);
+    faceTriangleCrossing(cell, f, 1, origin, direction, tri1, along1, tf1);
+    float t0 = along0 > 0.0 && exitCandidate(f, entryFace, tf0, t) ? tf0 : INFINITY;
+    float t1 = along1 > 0.0 && exitCandidate(f, entryFace, tf1, t) ? tf1 : INFINITY;
+    float tFace = min(t0, t1);
+    e.tNext = tFace < e.tNear ? e.tNear : min(e.tNext, tFace);
+    if (tFace < e.tNear)
+    {
+      e.planeFace = f;
+      e.tNear = tFace;
+      e.tFar = max(t0, t1);
+      e.near = t0 <= t1 ? tri0 : tri1;
+      e.far = t0 <= t1 ? tri1 : tri0;
+    }
+    bool in0 = backwards && f != entryFace && along0 < 0.0 && tf0 > tIn;
+    tIn = in0 ? tf0 : tIn;
+    bool in1 = backwards && f != entryFace && along1 < 0.0 && tf1 > tIn;
+    tIn = in1 ? tf1 : tIn;
+    e.inFace = in0 || in1 ? f : e.inFace;
+  }
+  return e;
+}
+
 // The face the ray leaves the cell by, entered at t through `entryFace`
 // (-1 at a start inside it), and where (tExit >= t). Forwards: the nearest
-// face plane the ray heads out of, accepted if the ray crosses that
-// triangle; else (a concave fold of a non-planar face) the nearest triangle
-// actually crossed. Backwards (a fold walked back): the face opposite the one
-// the walk came in by (the next layer of a fold, also where the line entered
-// the cell through the side), else the farthest plane the ray heads into.
-// A flat cell: flatCellExit, at t.
+// face plane the ray heads out of, if the ray crosses that triangle; else
+// the same face's other triangle if the ray crosses it before any other
+// face's plane (a concave fold of a non-planar face: nothing can be crossed
+// earlier); else (a ray slipping between two triangles at an edge)
+// EXIT_SEARCH: cellExitSearch decides. Backwards (a fold walked back): the
+// face opposite the one the walk came in by (the next layer of a fold, also
+// where the line entered the cell through the side), else the farthest
+// plane the ray heads into. A flat cell: flatCellExit, at t.
 int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, bool backwards,
   out float tExit)
 {
@@ -292,44 +345,36 @@ int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, boo
   {
     return flatCellExit(cell, entryFace, origin + t * direction);
   }
-  float tPlane = INFINITY, tIn = -INFINITY;
-  int planeFace = -1, inFace = -1;
-  Triangle planeTriangle;
-  for (int f = 0; f < 6; ++f)
-  {
-    for (int side = 0; side < 2; ++side)
-    {
-      Triangle tri;
-      float along, tf;
-      faceTriangleCrossing(cell, f, side, origin, direction, tri, along, tf);
-      if (along > 0.0 && tf < tPlane && exitCandidate(f, entryFace, tf, t))
-      {
-        tPlane = tf;
-        planeFace = f;
-        planeTriangle = tri;
-      }
-      if (backwards && f != entryFace && along < 0.0 && tf > tIn)
-      {
-        tIn = tf;
-        inFace = f;
-      }
-    }
-  }
+  ExitPlanes e = exitPlanes(cell, entryFace, origin, direction, t, backwards);
   if (backwards)
   {
     int across = oppositeFace(cell.id, cellKind(cell), entryFace);
-    return across >= 0 ? across : inFace;
+    return across >= 0 ? across : e.inFace;
   }
-  if (planeFace >= 0 && tPlane >= t - 1.0e-6 * abs(t) &&
-    crossesTriangle(planeTriangle, origin, direction, tPlane))
+  bool ahead = e.planeFace >= 0 && e.tNear >= t - 1.0e-6 * abs(t);
+  if (ahead && crossesTriangle(e.near, origin, direction, e.tNear))
   {
-    tExit = max(tPlane, t);
-    return planeFace;
+    tExit = max(e.tNear, t);
+    return e.planeFace;
   }
+  if (ahead && e.tFar <= e.tNext && crossesTriangle(e.far, origin, direction, e.tFar))
+  {
+    tExit = max(e.tFar, t);
+    return e.planeFace;
+  }
+  return e.planeFace >= 0 ? EXIT_SEARCH : -1;
+}
+
+// Where cellExit's rule does not decide (EXIT_SEARCH), forwards: the
+// nearest triangle the ray crosses heading out, else the nearest plane it
+// heads out of (the convex-cell rule), and where (tExit >= t).
+int cellExitSearch(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, out float tExit)
+{
   float tHit;
   int hitFace = nearestCrossedFace(cell, entryFace, origin, direction, t, tHit);
-  tExit = max(hitFace >= 0 ? tHit : tPlane, t);
-  return hitFace >= 0 ? hitFace : planeFace;
+  ExitPlanes e = exitPlanes(cell, entryFace, origin, direction, t, false);
+  tExit = max(hitFace >= 0 ? tHit : e.tNear, t);
+  return hitFace >= 0 ? hitFace : e.planeFace;
 }
 
 // Whether the ray heads out of the cell through every triangle of face f

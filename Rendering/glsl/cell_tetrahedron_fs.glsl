@@ -24,6 +24,7 @@ vec4 cellFieldData;    // the field (g, s0)
 // Loop iterations of a cell step spent here: reading the cell (PLANE_LOOPS
 // + FIELD_LOOPS), the exit search (4, a flat cell's 4 + 4), and 4 to spare.
 const int CELL_LOOPS = 12 + PLANE_LOOPS + FIELD_LOOPS;
+const bool EXIT_SEARCHES = false; // cellExit's planes always decide
 
 Cell loadCell(int t)
 {
@@ -123,6 +124,13 @@ int cellExit(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, boo
   }
   tExit = backwards ? t : max(tFace, t);
   return exitFace;
+}
+
+// Never needed (EXIT_SEARCHES): the march's interface.
+int cellExitSearch(Cell cell, int entryFace, vec3 origin, vec3 direction, float t, out float tExit)
+{
+  tExit = t;
+  return -1;
 }
 
 // Whether the ray heads out of the cell through face f (n_f . r > 1e-5,

@@ -14,7 +14,11 @@
 //   int boundaryEntry(code, ...)             the cell and face an entry code
 //                                            enters, and where
 //   int cellExit(cell, entryFace, ..., backwards, out tExit)
-//                                            the face the ray leaves it by
+//                                            the face the ray leaves it by,
+//                                            or EXIT_SEARCH where its rule
+//                                            cannot tell (EXIT_SEARCHES)
+//   int cellExitSearch(cell, entryFace, ..., out tExit)
+//                                            then, the slower search
 //   bool headsOutOfFace(cell, f, direction) (tangled meshes)
 //   bool hasField(cell); bool fieldAlongRay(cell, ..., out Stretch)
 //                                            the field along a stretch
@@ -68,6 +72,9 @@ struct Stretch
   int degree;
 };
 
+// cellExit's answer where only cellExitSearch can tell the exit.
+const int EXIT_SEARCH = -2;
+
 //PPIRay::FlatCells::Impl
 
 //PPIRay::CellKind::Impl
@@ -77,8 +84,9 @@ struct Stretch
 //PPIRay::ListedFaces::Impl
 
 // Loop iterations a cell step may take outside its pieces (march_common_fs.glsl):
-// its own, the cell kind's, the isovalue crossings and walks.
-const int STEP_LOOPS = 1 + CELL_LOOPS + (ISO_MODE == 0 ? 0 : 4 * MAXIMUM_ISO_VALUES);
+// its own, the cell kind's, the isovalue crossings and walks, and the outer
+// loop's iteration of an exit search.
+const int STEP_LOOPS = 1 + CELL_LOOPS + (ISO_MODE == 0 ? 0 : 4 * MAXIMUM_ISO_VALUES) + (EXIT_SEARCHES ? 1 : 0);
 
 // The next cell and the face it is entered by, out of `cell` through
 // `exitFace` whose neighbour code is `code` (not -1); `backwards` updated
@@ -148,12 +156,17 @@ void marchRay()
   float continuation = 0.0;
   int step = stepsTaken;
   // The steps, cell to cell; a listed exit face (split, or with reflex
-  // edges) ends them, is resolved here, outside the step loop (once per
-  // crossing, not in every step of the lanes that run together), and the
-  // steps go on from the cell it gives.
-  for (int listed = 0; listed < maximumSteps; ++listed)
+  // edges) or an exit only cellExitSearch can tell ends them, is resolved
+  // here, outside the step loop (once per crossing, not in every step of
+  // the lanes that run together), and the steps go on: from the cell the
+  // listed face gives, or with the step whose exit was searched for.
+  bool searched = false; // the exit of the step the loop resumes with
+  int searchedFace = -1;
+  float searchedExit = t;
+  for (int listed = 0; listed < 2 * maximumSteps; ++listed)
   {
     int pending = -1;
+    bool search = false;
     for (; step < maximumSteps; ++step)
     {
       if (!spendLoops(STEP_LOOPS))
@@ -164,8 +177,18 @@ void marchRay()
       }
       Cell c = loadCell(cell);
       bool walkingBack = FOLDS && backwards;
-      float tExit;
-      int exitFace = cellExit(c, entryFace, origin, direction, t, walkingBack, tExit);
+      float tExit = searchedExit;
+      int exitFace = searchedFace;
+      if (!(EXIT_SEARCHES && searched))
+      {
+        exitFace = cellExit(c, entryFace, origin, direction, t, walkingBack, tExit);
+      }
+      searched = false;
+      if (EXIT_SEARCHES && exitFace == EXIT_SEARCH)
+      {
+        search = true;
+        break;
+      }
       if ((FOLDS || FLAT_CELLS) && !walkingBack && entryFace >= 0 &&
         headsOutOfFace(c, entryFace, direction))
       {
@@ -221,6 +244,12 @@ void marchRay()
         break;
       }
       nextCell(code, exitFace, cell, entryFace, backwards);
+    }
+    if (EXIT_SEARCHES && search)
+    {
+      searchedFace = cellExitSearch(loadCell(cell), entryFace, origin, direction, t, searchedExit);
+      searched = true;
+      continue;
     }
     if (pending < 0)
     {
