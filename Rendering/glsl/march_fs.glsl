@@ -159,7 +159,8 @@ void marchRay()
   // edges) or an exit only cellExitSearch can tell ends them, is resolved
   // here, outside the step loop (once per crossing, not in every step of
   // the lanes that run together), and the steps go on: from the cell the
-  // listed face gives, or with the step whose exit was searched for.
+  // listed face gives, or with the step whose exit was searched for (at
+  // most one search and one listed face per step: 2 maximumSteps rounds).
   bool searched = false; // the exit of the step the loop resumes with
   int searchedFace = -1;
   float searchedExit = t;
