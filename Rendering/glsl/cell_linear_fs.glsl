@@ -19,11 +19,11 @@
 // Each quadrilateral (q0, q1, q2, q3) is two triangles split along q0-q2, or
 // q1-q3 when the face's bit is set: the same split as the neighbour's, so the
 // traversal is watertight on non-planar faces. The exit is the nearest
-// triangle the ray actually crosses (searched for outside the step, where
-// the nearest plane's triangle is not crossed: cellExitSearch); if rounding
-// lets the ray slip between the two (an edge), the nearest face plane it
-// heads out of (the convex-cell rule). A folded entry face can be the exit too (exitCandidate). A flat
-// cell (zero volume, FLAT_KIND_BIT in its kind) is crossed with zero length
+// triangle the ray actually crosses (cellExit, and where its rule cannot
+// tell, cellExitSearch outside the step); if rounding lets the ray slip
+// between the two (an edge), the nearest face plane it heads out of (the
+// convex-cell rule). A folded entry face can be the exit too
+// (exitCandidate). A flat cell (zero volume, FLAT_KIND_BIT in its kind) is crossed with zero length
 // (flat_cells_fs.glsl).
 
 //PPIRay::HexahedronField::Impl
@@ -48,7 +48,8 @@ vec4 cellD;   // c4..c7
 vec3 cellE;   // c8..c10 (QUADRATIC_FIELD)
 
 // Loop iterations of a cell step spent here: the exit's two searches over 6
-// faces x 2 triangles (the second, cellExitSearch, run for it by the march), the corners, the cubic's extrema and monotonic pieces, and a
+// faces x 2 triangles (the second, cellExitSearch, run for it by the
+// march), the corners, the cubic's extrema and monotonic pieces, and a
 // pyramid's field (four inversions, one more per isosurface crossed).
 const bool EXIT_SEARCHES = true;
 const int CELL_LOOPS = 63 +

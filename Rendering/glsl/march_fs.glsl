@@ -86,7 +86,8 @@ const int EXIT_SEARCH = -2;
 // Loop iterations a cell step may take outside its pieces (march_common_fs.glsl):
 // its own, the cell kind's, the isovalue crossings and walks, and the outer
 // loop's iteration of an exit search.
-const int STEP_LOOPS = 1 + CELL_LOOPS + (ISO_MODE == 0 ? 0 : 4 * MAXIMUM_ISO_VALUES) + (EXIT_SEARCHES ? 1 : 0);
+const int STEP_LOOPS =
+  1 + CELL_LOOPS + (ISO_MODE == 0 ? 0 : 4 * MAXIMUM_ISO_VALUES) + (EXIT_SEARCHES ? 1 : 0);
 
 // The next cell and the face it is entered by, out of `cell` through
 // `exitFace` whose neighbour code is `code` (not -1); `backwards` updated
