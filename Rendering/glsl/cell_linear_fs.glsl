@@ -214,14 +214,16 @@ bool exitCandidate(int f, int entryFace, float tf, float t)
   return f != entryFace || tf > t + 1.0e-5 * abs(t);
 }
 
-// A triangle the ray crosses heading out, at or after t: the nearer of the
-// two of the first face crossed (-1: none), and tHit.
+// The nearest triangle the ray crosses heading out, at or after t: its face
+// (-1: none) and tHit. In a strongly non-convex cell the line can leave,
+// come back in and leave again: the first face in face order with a
+// crossed triangle is not always the nearest.
 int nearestCrossedFace(Cell cell, int entryFace, vec3 origin, vec3 direction, float t,
   out float tHit)
 {
   tHit = INFINITY;
   int hitFace = -1;
-  for (int f = 0; f < 6 && hitFace < 0; ++f)
+  for (int f = 0; f < 6; ++f)
   {
     for (int side = 0; side < 2; ++side)
     {
