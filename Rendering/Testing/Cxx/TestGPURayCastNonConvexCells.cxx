@@ -11,8 +11,9 @@
 // cases these cells reach: a concave fold's far triangle crossed only after
 // the line left by another face (cellExit's other-face guard), and the
 // nearest of several crossed faces (cellExitSearch). The shapes and view
-// directions came from a random search over distorted hexahedra for those
-// where these rules decide many rays: each rule broken alone fails here.
+// directions are where those rules decide many rays, from a random search
+// over distorted hexahedra (Documentation/datasets/nonconvex_cells_search.py);
+// each rule broken alone fails here.
 
 #include "PPIRayImageCompare.h"
 #include "PPIRayTestScenes.h"
