@@ -21,6 +21,7 @@
 #include "vtkCellArray.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDoubleArray.h"
+#include "vtkMath.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -38,25 +39,30 @@ namespace
 {
 using Vec = std::array<double, 3>;
 
+// vtkMath's vector operations on values.
 Vec Sub(const Vec& a, const Vec& b)
 {
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+  Vec d;
+  vtkMath::Subtract(a.data(), b.data(), d.data());
+  return d;
 }
 
 double Dot(const Vec& a, const Vec& b)
 {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  return vtkMath::Dot(a.data(), b.data());
 }
 
 Vec Cross(const Vec& a, const Vec& b)
 {
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+  Vec c;
+  vtkMath::Cross(a.data(), b.data(), c.data());
+  return c;
 }
 
-Vec Normalized(const Vec& a)
+Vec Normalized(Vec a)
 {
-  const double n = std::sqrt(Dot(a, a));
-  return { a[0] / n, a[1] / n, a[2] / n };
+  vtkMath::Normalize(a.data());
+  return a;
 }
 
 // A distorted hexahedron (VTK's corner order, every corner's Jacobian
